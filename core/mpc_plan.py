@@ -1,0 +1,47 @@
+"""What an NMPC update returns: the plan to apply, its predictions, and how the solves went."""
+
+from __future__ import annotations
+
+from dataclasses import dataclass, field
+
+import numpy as np
+
+from core.nlp_solver import SolveStats
+
+
+@dataclass(frozen=True)
+class AdmmIteration:
+    """Residuals of one ADMM iteration r.
+
+    ``primal_payload_rms`` / ``primal_wrench_rms``: per agent, RMS of s_r^i - s_bar_r over the
+    payload-state part [mixed units of x] and the wrench part [N, N m]; ``dual_norm``:
+    ||P (s_bar_r - s_bar_{r-1})||.
+    """
+
+    primal_payload_rms: np.ndarray
+    primal_wrench_rms: np.ndarray
+    dual_norm: float
+    solves: tuple[SolveStats, ...]
+
+
+@dataclass
+class MpcPlan:
+    """Plan of one update, world frame, SI units.
+
+    ``grf``: (n_A, 12) first-stage GRFs to apply; ``wrench``: (n_A, 6) first-stage wrench each
+    robot exerts on the payload; trajectories over stages 0..N (states) or 0..N-1 (inputs).
+    ``success`` is False when any solve failed or did not converge: the plan is then the best
+    available one (the solver's last iterate if finite, else the shifted previous plan).
+    """
+
+    grf: np.ndarray
+    wrench: np.ndarray
+    robot_trajectories: np.ndarray
+    payload_trajectory: np.ndarray
+    grf_trajectories: np.ndarray
+    wrench_trajectories: np.ndarray
+    solves: list[SolveStats]
+    success: bool
+    update_time_s: float
+    admm_iterations: list[AdmmIteration] = field(default_factory=list)
+    consensus_trajectory: np.ndarray | None = None

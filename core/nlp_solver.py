@@ -1,0 +1,177 @@
+"""Build-once, solve-many NLP solvers over a stage-wise ``NlpProblem``.
+
+Three configurations (``SolverSettings.name``):
+
+* ``fatrop``: structure-exploiting interior point (shipped with CasADi), stage structure given
+  explicitly, derivatives code-generated and compiled when a compiler is supplied.
+* ``ipopt``: IPOPT + MUMPS with compiled derivatives, primal-dual warm start, monotone mu.
+* ``ipopt-reference``: the paper-faithful configuration kept for comparison: IPOPT + MUMPS on
+  interpreted CasADi expressions, primal warm start only, adaptive mu, tol 1e-6.
+
+A failed solve never raises: the result carries the status and the caller decides.
+"""
+
+from __future__ import annotations
+
+import hashlib
+import time
+from collections.abc import Callable
+from dataclasses import dataclass
+from typing import Protocol
+
+import casadi as ca
+import numpy as np
+
+from core.settings import SolverSettings
+from core.stagewise_nlp import NlpProblem
+
+
+class NlpCompiler(Protocol):
+    """Turns generated C code into a shared library, cached by key (implemented outside core)."""
+
+    def library_for(self, name: str, key: str, generate_c: Callable[[str], None]) -> str:
+        """Path of the compiled library for ``key``; calls ``generate_c(c_path)`` on a miss."""
+        ...
+
+
+@dataclass(frozen=True)
+class SolveStats:
+    """Outcome of one NLP solve (objective in the problem's scaled units)."""
+
+    status: str
+    success: bool
+    iterations: int
+    wall_time_s: float
+    objective: float
+    constraint_violation: float
+
+
+@dataclass
+class NlpSolution:
+    decision: np.ndarray
+    constraint_multipliers: np.ndarray
+    bound_multipliers: np.ndarray
+    stats: SolveStats
+
+
+def problem_key(problem: NlpProblem, solver_name: str, options: dict) -> str:
+    """Hash of the problem's expressions, the solver and its options (cache key)."""
+    function = ca.Function(
+        "key", [problem.decision.vector(), problem.parameters.vector()],
+        [problem.objective, problem.constraints],
+    )
+    digest = hashlib.sha256(function.serialize().encode())
+    digest.update(f"{solver_name}|{ca.__version__}|{sorted(options.items())!r}".encode())
+    return digest.hexdigest()[:16]
+
+
+class NlpSolver:
+    """One built solver for one problem; ``solve`` is called many times with new parameters."""
+
+    def __init__(
+        self, problem: NlpProblem, settings: SolverSettings, compiler: NlpCompiler | None = None
+    ) -> None:
+        self.problem = problem
+        self.settings = settings
+        plugin, options = self._options()
+        self._plugin = plugin
+        self.compiled = bool(compiler is not None and settings.compiled
+                             and settings.name != "ipopt-reference")
+        source: object = problem.casadi_dict()
+        if self.compiled:
+            assert compiler is not None
+            generator = ca.nlpsol(f"{problem.name}_gen", plugin, problem.casadi_dict(), options)
+            key = problem_key(problem, settings.name, {k: str(v) for k, v in options.items()})
+            source = compiler.library_for(problem.name, key, generator.generate_dependencies)
+        self._solver = ca.nlpsol(problem.name, plugin, source, options)
+        self._lbg = problem.lower_constraints
+        self._ubg = problem.upper_constraints
+        self._warm_duals = settings.name != "ipopt-reference"
+
+    def _options(self) -> tuple[str, dict]:
+        s = self.settings
+        common = {"print_time": False, "error_on_fail": False}
+        if s.name == "fatrop":
+            structure = self.problem.structure
+            return "fatrop", {
+                **common,
+                "structure_detection": "manual",
+                "nx": structure.state_sizes,
+                "nu": structure.input_sizes,
+                "ng": structure.path_constraint_counts,
+                "N": len(structure.state_sizes) - 1,
+                "equality": self.problem.equality,
+                "fatrop.print_level": 0,
+                "fatrop.tol": s.tolerance,
+                "fatrop.max_iter": s.max_iterations,
+            }
+        ipopt = {
+            "ipopt.print_level": 0,
+            "ipopt.sb": "yes",
+            "ipopt.linear_solver": "mumps",
+            "ipopt.max_iter": s.max_iterations,
+        }
+        if s.name == "ipopt-reference":
+            ipopt |= {"ipopt.tol": 1e-6, "ipopt.mu_strategy": "adaptive"}
+        else:
+            ipopt |= {
+                "ipopt.tol": s.tolerance,
+                "ipopt.mu_strategy": "monotone",
+                "ipopt.mu_init": 1e-4,
+                "ipopt.warm_start_init_point": "yes",
+                "ipopt.warm_start_bound_push": 1e-6,
+                "ipopt.warm_start_mult_bound_push": 1e-6,
+            }
+        return "ipopt", {**common, **ipopt}
+
+    def solve(
+        self,
+        initial_guess: np.ndarray,
+        parameters: np.ndarray,
+        lower_bounds: np.ndarray,
+        upper_bounds: np.ndarray,
+        constraint_multipliers: np.ndarray | None = None,
+        bound_multipliers: np.ndarray | None = None,
+    ) -> NlpSolution:
+        """Solve from ``initial_guess``; duals are used only by configurations that take them."""
+        args = {
+            "x0": initial_guess, "p": parameters, "lbx": lower_bounds, "ubx": upper_bounds,
+            "lbg": self._lbg, "ubg": self._ubg,
+        }
+        if self._warm_duals and constraint_multipliers is not None:
+            args["lam_g0"] = constraint_multipliers
+            if bound_multipliers is not None:
+                args["lam_x0"] = bound_multipliers
+        start = time.perf_counter()
+        try:
+            result = self._solver(**args)
+            failure = None
+        except RuntimeError as error:  # evaluation errors (e.g. NaN) surface here
+            result, failure = None, str(error).splitlines()[-1][:200]
+        wall = time.perf_counter() - start
+        if result is None:
+            n, m = self.problem.variable_count, self._lbg.size
+            stats = SolveStats(f"error: {failure}", False, 0, wall, float("nan"), float("inf"))
+            return NlpSolution(np.array(initial_guess, float), np.zeros(m), np.zeros(n), stats)
+        x = np.asarray(result["x"]).ravel()
+        g = np.asarray(result["g"]).ravel()
+        violation = float(max(
+            np.max(np.maximum(g - self._ubg, 0.0), initial=0.0),
+            np.max(np.maximum(self._lbg - g, 0.0), initial=0.0),
+            np.max(np.maximum(x - upper_bounds, 0.0), initial=0.0),
+            np.max(np.maximum(lower_bounds - x, 0.0), initial=0.0),
+        ))
+        raw = self._solver.stats()
+        objective = float(result["f"])
+        finite = bool(np.all(np.isfinite(x)) and np.isfinite(objective))
+        stats = SolveStats(
+            status=str(raw.get("return_status", raw.get("unified_return_status", "unknown"))),
+            success=bool(raw.get("success", False)) and finite,
+            iterations=int(raw.get("iter_count", -1)),
+            wall_time_s=wall,
+            objective=objective,
+            constraint_violation=violation if finite else float("inf"),
+        )
+        return NlpSolution(
+            x, np.asarray(result["lam_g"]).ravel(), np.asarray(result["lam_x"]).ravel(), stats
+        )

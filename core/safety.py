@@ -1,0 +1,61 @@
+"""Obstacle-avoidance safety functions and their discrete-time HOCBF (relative degree two).
+
+h(x) = ||g(x) - o|| - d_safe with g(x) the planar CoM position [m]. The DT-HOCBF condition of
+[DT-HOCBF] over the horizon is
+
+    h_{k+2} - (2 - a1 - a2) h_{k+1} + (1 - a1)(1 - a2) h_k >= 0,  k = 0 .. N-2.
+
+With the semi-implicit Euler model (core.srb_model), p_{j-1} = p_j - Ts v_j and
+p_{j+1} = p_j + Ts (v_j + Ts a_j), so the condition centred on stage j = k+1 depends only on
+stage j's state and acceleration (hence inputs): the constraint is stage-wise, as structure-
+exploiting solvers need, and exactly equal to the three-stage form.
+
+Obstacles are parameters: (o_x, o_y, vo_x, vo_y, d) per obstacle with o the position at the
+first stage [m], vo a constant velocity [m/s] used to predict o over the horizon, and d the
+safety distance [m] (d_safe plus the obstacle radius, if any).
+"""
+
+from __future__ import annotations
+
+import casadi as ca
+
+OBSTACLE_PARAMETER_SIZE = 5
+# An unused obstacle slot is parked here: far away, so its barrier is inactive.
+PARKED_OBSTACLE = (1e4, 1e4, 0.0, 0.0, 0.0)
+
+
+def obstacle_position(obstacle: ca.SX, stage: int, sample_period_s: float) -> ca.SX:
+    """Predicted planar obstacle position [m] at ``stage`` (constant-velocity model)."""
+    return obstacle[0:2] + stage * sample_period_s * obstacle[2:4]
+
+
+def safety_function(position_xy: ca.SX, obstacle_xy: ca.SX, distance_m: ca.SX) -> ca.SX:
+    """h = ||p - o|| - d [m]."""
+    return ca.norm_2(position_xy - obstacle_xy) - distance_m
+
+
+def hocbf_condition(h0: ca.SX, h1: ca.SX, h2: ca.SX, alpha1: float, alpha2: float) -> ca.SX:
+    """Left-hand side of the DT-HOCBF condition (>= 0 is safe)."""
+    return h2 - (2 - alpha1 - alpha2) * h1 + (1 - alpha1) * (1 - alpha2) * h0
+
+
+def stagewise_hocbf(
+    x: ca.SX,
+    linear_acceleration: ca.SX,
+    obstacle: ca.SX,
+    stage: int,
+    sample_period_s: float,
+    alpha1: float,
+    alpha2: float,
+) -> ca.SX:
+    """DT-HOCBF centred on ``stage`` (>= 1) from that stage's state and acceleration only."""
+    ts = sample_period_s
+    p, v = x[0:2], x[3:5]
+    p_prev = p - ts * v
+    p_next = p + ts * (v + ts * linear_acceleration[0:2])
+    d = obstacle[4]
+    h = [
+        safety_function(pos, obstacle_position(obstacle, s, ts), d)
+        for pos, s in ((p_prev, stage - 1), (p, stage), (p_next, stage + 1))
+    ]
+    return hocbf_condition(h[0], h[1], h[2], alpha1, alpha2)

@@ -1,0 +1,152 @@
+"""Typed controller settings with the paper's values as defaults.
+
+Every number here is in SI units. Settings are plain pydantic models: the caller loads YAML
+(see ``deploy/``), validates it into these models, and passes them to constructors. Nothing
+here reads files.
+"""
+
+from __future__ import annotations
+
+from typing import Literal
+
+from pydantic import BaseModel, ConfigDict, Field, field_validator
+
+
+class StrictModel(BaseModel):
+    """Base: unknown fields are errors, so a typo in YAML names the bad field."""
+
+    model_config = ConfigDict(extra="forbid", frozen=True)
+
+
+class SrbWeights(StrictModel):
+    """Diagonal SRB tracking weights Q = blkdiag(Q_p, Q_v, Q_theta, Q_omega) (paper, Sec. IV-A)."""
+
+    position: tuple[float, float, float] = (1e7, 1e7, 16e7)
+    velocity: tuple[float, float, float] = (1e6, 1e6, 1e6)
+    euler: tuple[float, float, float] = (1e7, 1e7, 1e7)
+    angular_velocity: tuple[float, float, float] = (1e5, 1e5, 1e5)
+
+    def diagonal(self) -> list[float]:
+        """The 12 diagonal entries in state order (p, v, Theta, omega)."""
+        return [*self.position, *self.velocity, *self.euler, *self.angular_velocity]
+
+
+class CostSettings(StrictModel):
+    """Cost weights of the NMPC; defaults are the paper's."""
+
+    robot_state: SrbWeights = SrbWeights()
+    payload_state: SrbWeights = SrbWeights()
+    terminal_factor: float = Field(10.0, gt=0)
+    ground_reaction_force: float = Field(20.0, gt=0)
+    wrench_force: float = Field(50.0, gt=0)
+    wrench_torque: float = Field(500.0, gt=0)
+
+
+class CouplingSettings(StrictModel):
+    """Yaw-free rigid coupling between each robot and the payload."""
+
+    enabled: bool = True
+    yaw_torque: Literal["constrain", "penalize"] = "constrain"
+    baumgarte: bool = False
+    baumgarte_damping_ratio: float = Field(1.0, gt=0)
+    baumgarte_natural_frequency_rad_s: float = Field(10.0, gt=0)
+
+
+class SafetySettings(StrictModel):
+    """Discrete-time HOCBF obstacle avoidance."""
+
+    alpha1: float = Field(0.4, gt=0, le=1)
+    alpha2: float = Field(0.04, gt=0, le=1)
+    safety_distance_m: float = Field(0.6, gt=0)
+    max_obstacles: int = Field(8, ge=0)
+
+
+class ContactSettings(StrictModel):
+    friction_coefficient: float = Field(0.4, gt=0)
+    max_normal_force_n: float = Field(250.0, gt=0)
+
+
+class AdmmSettings(StrictModel):
+    """ADMM consensus over payload-state and wrench trajectories."""
+
+    iterations: int = Field(2, ge=1)
+    rho_state: float = Field(1e4, ge=0)
+    rho_wrench: float = Field(1e3, gt=0)
+
+
+SolverName = Literal["fatrop", "ipopt", "ipopt-reference"]
+
+
+class SolverSettings(StrictModel):
+    """Which NLP solver runs the problems, and whether its derivatives are compiled.
+
+    ``ipopt-reference`` is the paper-faithful configuration (IPOPT + MUMPS, CasADi expressions
+    interpreted, primal warm start, adaptive mu, tol 1e-6) kept for comparison.
+    """
+
+    name: SolverName = "fatrop"
+    compiled: bool = True
+    max_iterations: int = Field(50, ge=1)
+    tolerance: float = Field(1e-4, gt=0)
+    objective_scale: float = Field(1e-5, gt=0)
+
+
+class MpcSettings(StrictModel):
+    """Everything the centralized and distributed NMPC builders need besides the models."""
+
+    horizon_steps: int = Field(8, ge=2)
+    sample_period_s: float = Field(1.0 / 60.0, gt=0)
+    gravity_m_s2: float = 9.81
+    cost: CostSettings = CostSettings()
+    coupling: CouplingSettings = CouplingSettings()
+    safety: SafetySettings = SafetySettings()
+    contact: ContactSettings = ContactSettings()
+    admm: AdmmSettings = AdmmSettings()
+    solver: SolverSettings = SolverSettings()
+
+
+class PayloadSettings(StrictModel):
+    """Modelled payload: a box of uniform density unless an inertia is given."""
+
+    mass_kg: float = Field(5.0, gt=0)
+    size_m: tuple[float, float, float] = (1.0, 0.5, 0.05)
+    inertia_kg_m2: tuple[float, float, float] | None = None
+
+    def principal_inertia_kg_m2(self) -> tuple[float, float, float]:
+        if self.inertia_kg_m2 is not None:
+            return self.inertia_kg_m2
+        a, b, c = self.size_m
+        m = self.mass_kg
+        return (m * (b * b + c * c) / 12, m * (a * a + c * c) / 12, m * (a * a + b * b) / 12)
+
+
+ROBOT_TYPES = ("go2", "a1")
+
+
+class AgentSettings(StrictModel):
+    """One robot of the team and where it is coupled to the payload."""
+
+    name: str
+    robot_type: str = "go2"
+    coupling_point_in_payload_m: tuple[float, float, float]
+    coupling_point_in_robot_m: tuple[float, float, float] = (0.0, 0.0, 0.1)
+
+    @field_validator("robot_type")
+    @classmethod
+    def _known_robot(cls, value: str) -> str:
+        if value not in ROBOT_TYPES:
+            raise ValueError(f"unknown robot type {value!r}; available: {', '.join(ROBOT_TYPES)}")
+        return value
+
+
+class TeamSettings(StrictModel):
+    agents: list[AgentSettings] = Field(min_length=1)
+    payload: PayloadSettings = PayloadSettings()
+
+    @field_validator("agents")
+    @classmethod
+    def _unique_names(cls, agents: list[AgentSettings]) -> list[AgentSettings]:
+        names = [a.name for a in agents]
+        if len(set(names)) != len(names):
+            raise ValueError(f"agent names must be unique, got {names}")
+        return agents

@@ -1,0 +1,66 @@
+"""Initial guesses for the NMPC: a cold guess from the measurement, and the shifted previous plan.
+
+Decision blocks are named ``<block>@<stage>`` (see ``core.stagewise_nlp``). Shifting moves every
+block one stage earlier and repeats the last one. Ground reaction forces are then made
+consistent with the new contact schedule: zero on swing feet, and the nominal weight share on a
+stance foot that the old plan left unloaded (a gait switch); without this, the newly appended
+stage costs the solver many extra iterations.
+"""
+
+from __future__ import annotations
+
+import numpy as np
+
+from core.layout import BlockLayout
+from core.srb_model import STATE_SIZE
+
+
+def shift_solution(layout: BlockLayout, horizon_steps: int, solution: np.ndarray) -> np.ndarray:
+    """Previous solution moved one stage earlier, the last stage repeated."""
+    shifted = np.array(solution, dtype=float)
+    for name in layout.offsets:
+        base, stage = name.rsplit("@", 1)
+        k = int(stage)
+        last = horizon_steps if f"{base}@{horizon_steps}" in layout.offsets else horizon_steps - 1
+        source = f"{base}@{min(k + 1, last)}"
+        shifted[layout.slice(name)] = np.asarray(solution)[layout.slice(source)]
+    return shifted
+
+
+def nominal_foot_forces(contacts: np.ndarray, supported_mass_kg: float, gravity_m_s2: float
+                        ) -> np.ndarray:
+    """12-vector of GRFs [N] sharing ``supported_mass_kg``'s weight among the stance feet."""
+    flags = np.asarray(contacts, dtype=float)
+    stance = max(flags.sum(), 1.0)
+    forces = np.zeros((4, 3))
+    forces[:, 2] = flags * supported_mass_kg * gravity_m_s2 / stance
+    return forces.reshape(-1)
+
+
+def conform_forces(
+    guess: np.ndarray,
+    layout: BlockLayout,
+    grf_block: str,
+    contacts: np.ndarray,
+    supported_mass_kg: float,
+    gravity_m_s2: float,
+    minimum_stance_force_n: float = 1.0,
+) -> None:
+    """In place: zero GRFs on swing feet, nominal force on unloaded stance feet, per stage."""
+    for k, flags in enumerate(np.asarray(contacts, dtype=float)):
+        block = layout.slice(f"{grf_block}@{k}")
+        forces = guess[block].reshape(4, 3)
+        nominal = nominal_foot_forces(flags, supported_mass_kg, gravity_m_s2).reshape(4, 3)
+        for leg in range(4):
+            if flags[leg] == 0.0:
+                forces[leg] = 0.0
+            elif forces[leg, 2] < minimum_stance_force_n:
+                forces[leg] = nominal[leg]
+        guess[block] = forces.reshape(-1)
+
+
+def constant_state_guess(layout: BlockLayout, horizon_steps: int, block: str,
+                         state: np.ndarray) -> dict[str, np.ndarray]:
+    """Block values holding ``state`` (12,) at every stage of ``block``."""
+    return {f"{block}@{k}": np.asarray(state, float).reshape(STATE_SIZE)
+            for k in range(horizon_steps + 1)}
