@@ -58,10 +58,14 @@ class FootholdPlanner:
         self._stance = np.ones(4)
 
     def _hips(self, state: np.ndarray) -> np.ndarray:
+        """Neutral footholds under the hips (standing foot positions) for a trunk at ``state``."""
         yaw = state[8]
         c, s = np.cos(yaw), np.sin(yaw)
         rotation = np.array([[c, -s, 0], [s, c, 0], [0, 0, 1]])
-        return state[0:3] + self.robot.hip_positions_in_body_m @ rotation.T
+        neutral = self.robot.nominal_feet_in_body_m
+        if neutral is None:
+            neutral = self.robot.hip_positions_in_body_m
+        return state[0:3] + neutral @ rotation.T
 
     def _raibert(self, reference_state: np.ndarray, measured_velocity: np.ndarray) -> np.ndarray:
         hips = self._hips(reference_state)

@@ -33,12 +33,15 @@ def srb_parameters_from_model(
     inertia = np.array(data.Ig.inertia)
     hips = np.array([data.oMi[model.getJointId(f"{leg}_hip_joint")].translation - com
                      for leg in LEG_NAMES])
-    feet_z = [data.oMf[model.getFrameId(f"{leg}_foot")].translation[2] for leg in LEG_NAMES]
-    nominal_height = float(com[2] - (min(feet_z) - foot_radius_m))
+    feet = np.array([data.oMf[model.getFrameId(f"{leg}_foot")].translation - com
+                     for leg in LEG_NAMES])
+    feet[:, 2] -= foot_radius_m
+    nominal_height = float(-feet[:, 2].min())
     return SrbParameters(
         name=name,
         mass_kg=float(pin.computeTotalMass(model)),
         inertia_in_body_kg_m2=0.5 * (inertia + inertia.T),
         hip_positions_in_body_m=hips,
         nominal_height_m=nominal_height,
+        nominal_feet_in_body_m=feet,
     )

@@ -34,7 +34,9 @@ class SrbParameters:
 
     ``inertia_in_body_kg_m2`` is about the CoM in body axes; ``hip_positions_in_body_m`` are the
     four hip joint positions (FL, FR, RL, RR) relative to the CoM in body axes (zeros for the
-    payload); ``nominal_height_m`` is the standing CoM height above the ground.
+    payload); ``nominal_feet_in_body_m`` the standing foot contact points relative to the CoM
+    (the neutral footholds of Raibert's rule); ``nominal_height_m`` is the standing CoM height
+    above the ground.
     """
 
     name: str
@@ -42,6 +44,7 @@ class SrbParameters:
     inertia_in_body_kg_m2: np.ndarray
     hip_positions_in_body_m: np.ndarray
     nominal_height_m: float
+    nominal_feet_in_body_m: np.ndarray | None = None
 
     def __post_init__(self) -> None:
         if not np.isfinite(self.mass_kg) or self.mass_kg <= 0:
