@@ -107,6 +107,7 @@ class DistributedMpc:
         plan.admm_iterations = records
         plan.solves = [stats for record in records for stats in record.solves]
         plan.success = all(stats.success for stats in plan.solves)
+        plan.flag_unsafe_start(inputs.safety_values())
         plan.update_time_s = time.perf_counter() - start
         return plan
 

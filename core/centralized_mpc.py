@@ -54,6 +54,7 @@ class CentralizedMpc:
         plan = decode_plan(self.problem, self.team, decision)
         plan.solves = [solution.stats]
         plan.success = solution.stats.success
+        plan.flag_unsafe_start(inputs.safety_values())
         plan.update_time_s = time.perf_counter() - start
         return plan
 

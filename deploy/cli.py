@@ -1,0 +1,63 @@
+"""The ``porter`` command line."""
+
+from __future__ import annotations
+
+import argparse
+import sys
+from pathlib import Path
+
+
+def _bench_nmpc(args: argparse.Namespace) -> int:
+    from deploy.bench_nmpc import format_table, run_bench, write_json
+
+    print(f"porter bench nmpc: agents {args.agents}, solver {args.solver}, "
+          f"{args.duration} s closed loop each, {'process' if args.parallel else 'serial'} "
+          "executor")
+    rows = run_bench(args.agents, args.solver, args.duration, args.parallel,
+                     not args.no_reference)
+    print(format_table(rows))
+    if args.json:
+        write_json(rows, Path(args.json))
+        print(f"wrote {args.json}")
+    return 0
+
+
+def _sim(args: argparse.Namespace) -> int:
+    from deploy.srb_sim import run_srb_sim
+
+    return run_srb_sim(args)
+
+
+def build_parser() -> argparse.ArgumentParser:
+    parser = argparse.ArgumentParser(prog="porter", description=__doc__)
+    commands = parser.add_subparsers(dest="command", required=True)
+
+    bench = commands.add_parser("bench", help="benchmarks that print tables")
+    bench_kinds = bench.add_subparsers(dest="bench", required=True)
+    nmpc = bench_kinds.add_parser("nmpc", help="centralized vs ADMM NMPC update times")
+    nmpc.add_argument("--agents", type=int, nargs="+", default=[2, 3, 4])
+    nmpc.add_argument("--solver", default="fatrop", choices=["fatrop", "ipopt"])
+    nmpc.add_argument("--duration", type=float, default=5.0, help="closed-loop seconds per row")
+    nmpc.add_argument("--serial", dest="parallel", action="store_false",
+                      help="run ADMM local solves serially instead of one process per agent")
+    nmpc.add_argument("--no-reference", action="store_true",
+                      help="skip the paper-faithful ipopt-reference rows")
+    nmpc.add_argument("--json", help="also write the figures as JSON {rows: [...]}")
+    nmpc.set_defaults(handler=_bench_nmpc)
+
+    sim = commands.add_parser("sim", help="run a closed-loop scenario")
+    sim.add_argument("--agents", type=int, default=2)
+    sim.add_argument("--mode", default="distributed", choices=["distributed", "centralized"])
+    sim.add_argument("--duration", type=float, default=10.0)
+    sim.add_argument("--json", help="write the summary metrics as JSON")
+    sim.set_defaults(handler=_sim)
+    return parser
+
+
+def main(argv: list[str] | None = None) -> int:
+    args = build_parser().parse_args(argv)
+    return int(args.handler(args))
+
+
+if __name__ == "__main__":
+    sys.exit(main())

@@ -1,0 +1,73 @@
+"""ADMM distributed NMPC: equivalence with centralized, residual decay, wrench-only variant."""
+
+from __future__ import annotations
+
+import numpy as np
+import pytest
+
+from core.admm_mpc import DistributedMpc
+from core.centralized_mpc import CentralizedMpc
+from core.closed_loop import Obstacle, run_closed_loop
+from core.settings import AdmmSettings, CouplingSettings
+from tests.core.controller_fixtures import (
+    INTERPRETED,
+    inputs_at_start,
+    reference,
+    settings,
+    team,
+)
+
+
+@pytest.mark.slow
+def test_many_iterations_converge_to_the_equivalent_centralized_solution() -> None:
+    mpc = settings(solver=INTERPRETED.model_copy(update={"tolerance": 1e-6}))
+    model = team()
+    inputs = inputs_at_start(model, mpc, [Obstacle((1.0, 0.9))])
+    # The local costs each count the payload and wrench terms: the equivalent centralized
+    # problem counts them n_A times.
+    central = CentralizedMpc(model, mpc, shared_cost_copies=model.agent_count).update(inputs)
+    distributed = DistributedMpc(model, mpc)
+    plan = distributed.update(inputs, iterations=150)
+    residual = plan.admm_iterations[-1]
+    assert np.max(residual.primal_wrench_rms) < 0.005
+    np.testing.assert_allclose(plan.payload_trajectory, central.payload_trajectory, atol=2e-3)
+    np.testing.assert_allclose(plan.wrench_trajectories, central.wrench_trajectories, atol=0.2)
+    np.testing.assert_allclose(plan.grf, central.grf, atol=0.2)
+
+
+def test_primal_residual_falls_with_iterations() -> None:
+    mpc = settings()
+    model = team()
+    plan = DistributedMpc(model, mpc).update(inputs_at_start(model, mpc), iterations=8)
+    wrench = [np.max(r.primal_wrench_rms) for r in plan.admm_iterations]
+    payload = [np.max(r.primal_payload_rms) for r in plan.admm_iterations]
+    assert len(wrench) == 8
+    assert wrench[-1] < 0.2 * wrench[0]
+    assert payload[-1] < payload[0]
+    assert all(np.isfinite(r.dual_norm) for r in plan.admm_iterations)
+
+
+@pytest.mark.slow
+def test_distributed_closed_loop_tracks_safely() -> None:
+    mpc = settings()
+    model = team()
+    result = run_closed_loop(DistributedMpc(model, mpc), model, model, mpc, reference(),
+                             [Obstacle((1.0, 0.45))], duration_s=3.0)
+    assert np.min(result.min_h_m) >= -1e-3
+    assert result.final_payload_state is not None and result.final_payload_state[0] > 0.6
+    assert np.max(result.coupling_error_m) < 1e-3
+    assert np.mean(result.success) > 0.95
+    assert len(result.primal_payload_rms) == len(result.times_s)
+
+
+@pytest.mark.parametrize("rho_state", [0.0, 10.0])
+def test_wrench_only_variant_runs(rho_state: float) -> None:
+    mpc = settings(coupling=CouplingSettings(enabled=False),
+                   admm=AdmmSettings(rho_state=rho_state))
+    model = team()
+    controller = DistributedMpc(model, mpc)
+    assert controller.problem.consensus_weights()[0] == rho_state
+    result = run_closed_loop(controller, model, model, mpc, reference(), [], duration_s=0.5)
+    assert all(np.isfinite(result.update_time_s))
+    assert result.final_payload_state is not None
+    assert np.all(np.isfinite(result.final_payload_state))
