@@ -41,12 +41,14 @@ class TrotGait:
 class FootholdPlanner:
     """Keeps stance feet where they landed and places the next footholds with Raibert's rule:
 
-    p_foot = p_hip(touchdown) + v_ref T_stance / 2 + k_v (v - v_ref), projected to the ground.
+    p_foot = p_hip(touchdown) + v_ref T_stance / 2 + k_v (v - v_ref), projected to the ground,
+    with the hip position at touchdown predicted from the measured trunk state (footholds under
+    the reference instead of the actual trunk let a lateral error run away).
     """
 
     robot: SrbParameters
     gait: TrotGait
-    velocity_gain: float = 0.03
+    velocity_gain: float = 0.18  # ~sqrt(h / g): capture-point feedback on velocity error
     ground_height_m: float = 0.0
     feet_in_world_m: np.ndarray = field(default_factory=lambda: np.zeros((4, 3)))
     _stance: np.ndarray = field(default_factory=lambda: np.ones(4))
@@ -67,12 +69,15 @@ class FootholdPlanner:
             neutral = self.robot.hip_positions_in_body_m
         return state[0:3] + neutral @ rotation.T
 
-    def _raibert(self, reference_state: np.ndarray, measured_velocity: np.ndarray) -> np.ndarray:
-        hips = self._hips(reference_state)
-        v_ref = reference_state[3:6]
-        offset = v_ref * self.gait.stance_duration_s / 2 + self.velocity_gain * (
-            measured_velocity - v_ref)
-        feet = hips + offset
+    def _raibert(self, robot_state: np.ndarray, lead_time_s: float, velocity_ref: np.ndarray
+                 ) -> np.ndarray:
+        """Footholds for a touchdown ``lead_time_s`` from now: the measured hips carried forward
+        at the measured velocity, plus Raibert's velocity terms, on the ground."""
+        predicted = np.array(robot_state, dtype=float)
+        predicted[0:3] = predicted[0:3] + lead_time_s * predicted[3:6]
+        velocity = predicted[3:6]
+        feet = self._hips(predicted) + velocity_ref * self.gait.stance_duration_s / 2 + (
+            self.velocity_gain * (velocity - velocity_ref))
         feet[:, 2] = self.ground_height_m
         return feet
 
@@ -81,7 +86,7 @@ class FootholdPlanner:
         stance = self.gait.contacts(time_s)
         landing = (stance == 1.0) & (self._stance == 0.0)
         if np.any(landing):
-            target = self._raibert(reference_state, robot_state[3:6])
+            target = self._raibert(robot_state, 0.0, reference_state[3:6])
             self.feet_in_world_m[landing] = target[landing]
         self._stance = stance
 
@@ -91,7 +96,7 @@ class FootholdPlanner:
         """Feet (steps, 4, 3) [m] and contacts (steps, 4) over the horizon.
 
         ``reference_states`` (steps, 12) are the robot's references at the stages; a leg that
-        lands at stage k uses the Raibert foothold computed from stage k's reference.
+        lands at stage k is placed by Raibert's rule for a touchdown k steps ahead.
         """
         contacts = self.gait.schedule(time_s, steps, sample_period_s)
         feet = np.empty((steps, 4, 3))
@@ -100,7 +105,8 @@ class FootholdPlanner:
         for k in range(steps):
             landing = (contacts[k] == 1.0) & (previous == 0.0)
             if np.any(landing):
-                target = self._raibert(reference_states[k], robot_state[3:6])
+                target = self._raibert(robot_state, k * sample_period_s,
+                                       reference_states[k][3:6])
                 current[landing] = target[landing]
             feet[k] = current
             previous = contacts[k]

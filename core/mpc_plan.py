@@ -47,14 +47,14 @@ class MpcPlan:
     consensus_trajectory: np.ndarray | None = None
     warnings: list[str] = field(default_factory=list)
 
-    def flag_unsafe_start(self, safety_values_m: np.ndarray) -> None:
+    def flag_unsafe_start(self, safety_values_m: np.ndarray, tolerance_m: float = 5e-3) -> None:
         """Mark the plan failed if any body starts inside an obstacle's safety margin.
 
         The plan is still the solver's (a recovery plan: the DT-HOCBF drives h back up), but
         the caller must know the safe set was left. ``safety_values_m``: (1 + n_A, n_O), payload
-        first.
+        first. Violations within ``tolerance_m`` (model mismatch, sensor noise) are not flagged.
         """
-        for body, obstacle in np.argwhere(safety_values_m < 0.0):
+        for body, obstacle in np.argwhere(safety_values_m < -tolerance_m):
             who = "payload" if body == 0 else f"robot {body - 1}"
             self.warnings.append(f"start inside safety margin: {who} vs obstacle {obstacle}, "
                                  f"h = {safety_values_m[body, obstacle]:.3f} m")

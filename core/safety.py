@@ -59,3 +59,27 @@ def stagewise_hocbf(
         for pos, s in ((p_prev, stage - 1), (p, stage), (p_next, stage + 1))
     ]
     return hocbf_condition(h[0], h[1], h[2], alpha1, alpha2)
+
+
+def stagewise_first_order(
+    x: ca.SX,
+    linear_acceleration: ca.SX,
+    obstacle: ca.SX,
+    stage: int,
+    sample_period_s: float,
+    alpha1: float,
+) -> ca.SX:
+    """psi1_k = h_{k+1} - (1 - a1) h_k from stage k's state and acceleration (>= 0 is safe).
+
+    The DT-HOCBF keeps {psi1 >= 0} invariant only for an exact model. Against a plant whose
+    motion differs from the semi-implicit Euler prediction (by Ts^2 a / 2 per step for a held
+    force), the small alpha2 lets psi1 drift negative step after step; enforcing psi1 >= 0 from
+    stage 1 on (stage 0 is fixed by the measurement) bounds that drift.
+    """
+    ts = sample_period_s
+    p, v = x[0:2], x[3:5]
+    p_next = p + ts * (v + ts * linear_acceleration[0:2])
+    d = obstacle[4]
+    h_now = safety_function(p, obstacle_position(obstacle, stage, ts), d)
+    h_next = safety_function(p_next, obstacle_position(obstacle, stage + 1, ts), d)
+    return h_next - (1 - alpha1) * h_now

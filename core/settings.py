@@ -59,6 +59,9 @@ class SafetySettings(StrictModel):
     alpha2: float = Field(0.04, gt=0, le=1)
     safety_distance_m: float = Field(0.6, gt=0)
     max_obstacles: int = Field(8, ge=0)
+    # Also enforce psi1 = h_{k+1} - (1 - alpha1) h_k >= 0 at stages 1..N-1 (see
+    # core.safety.stagewise_first_order): robustness to model mismatch; not in the paper.
+    first_order_condition: bool = True
 
 
 class ContactSettings(StrictModel):

@@ -26,7 +26,7 @@ import numpy as np
 
 from core.coupling import acceleration_level_constraint, coupling_kinematics, yaw_torque
 from core.mpc_inputs import MpcInputs
-from core.safety import OBSTACLE_PARAMETER_SIZE, stagewise_hocbf
+from core.safety import OBSTACLE_PARAMETER_SIZE, stagewise_first_order, stagewise_hocbf
 from core.settings import MpcSettings
 from core.srb_model import (
     GRF_SIZE,
@@ -254,6 +254,13 @@ def build_transport_problem(
                 for x, a in bodies
                 for o in range(max_obstacles)
             ]
+            if safety.first_order_condition:
+                barriers += [
+                    stagewise_first_order(x, a, obstacles[size * o : size * (o + 1)], k, ts,
+                                          safety.alpha1)
+                    for x, a in bodies
+                    for o in range(max_obstacles)
+                ]
             b.path(k, ca.vertcat(*barriers), 0.0, np.inf)
 
     # -- cost
