@@ -50,6 +50,7 @@ class ClosedLoopResult:
     local_solve_time_s: list[float] = field(default_factory=list)
     iterations: list[float] = field(default_factory=list)
     success: list[bool] = field(default_factory=list)
+    failed_solves: list[int] = field(default_factory=list)  # NLP solves not converged
     primal_payload_rms: list[float] = field(default_factory=list)
     primal_wrench_rms: list[float] = field(default_factory=list)
     final_payload_state: np.ndarray | None = None
@@ -117,6 +118,7 @@ def _record(result: ClosedLoopResult, t: float, inputs: MpcInputs, plan: MpcPlan
     result.min_h_m.append(h.min(axis=1) if h.size else np.full(h.shape[0], np.inf))
     result.update_time_s.append(plan.update_time_s)
     result.success.append(plan.success)
+    result.failed_solves.append(sum(not s.success for s in plan.solves))
     result.iterations.append(float(np.mean([s.iterations for s in plan.solves])))
     result.local_solve_time_s.append(float(np.mean([s.wall_time_s for s in plan.solves])))
     if plan.admm_iterations:
