@@ -82,7 +82,8 @@ def initial_guess(
             layout.put(guess, f"payload@{k}", inputs.payload_state)
             if k < n:
                 for j in range(team.agent_count):
-                    layout.put(guess, f"wrench_{j}@{k}", [0, 0, payload_share_kg * g, 0, 0, 0])
+                    layout.put(guess, f"wrench_{j}@{k}",
+                               np.array([0, 0, payload_share_kg * g, 0, 0, 0]))
     for key, r in zip(problem.robot_keys(), problem.robot_indices(agent), strict=True):
         conform_forces(guess, layout, f"grf_{key}", inputs.contacts[r],
                        team.robots[r].mass_kg + payload_share_kg, g)

@@ -15,7 +15,7 @@ from dataclasses import dataclass
 
 import casadi as ca
 
-from core.srb_model import BodyAcceleration, rotation_body_to_world, split_state
+from core.srb_model import BodyAcceleration, Expr, rotation_body_to_world, split_state
 
 COUPLING_SIZE = 5
 
@@ -24,12 +24,12 @@ COUPLING_SIZE = 5
 class CouplingKinematics:
     """phi [m, -], phi_dot [m/s, 1/s] and phi_ddot [m/s^2, 1/s^2] of one robot-payload edge."""
 
-    phi: ca.SX
-    phi_dot: ca.SX
-    phi_ddot: ca.SX
+    phi: Expr
+    phi_dot: Expr
+    phi_ddot: Expr | None
 
 
-def _body_vector(x: ca.SX, vector_in_body: ca.SX, acceleration: BodyAcceleration | None):
+def _body_vector(x: Expr, vector_in_body: Expr, acceleration: BodyAcceleration | None):
     """World-frame vector fixed in a body, its first and (if given acceleration) second derivative."""
     _, _, euler, omega = split_state(x)
     d = rotation_body_to_world(euler) @ vector_in_body
@@ -40,18 +40,18 @@ def _body_vector(x: ca.SX, vector_in_body: ca.SX, acceleration: BodyAcceleration
     return d, d_dot, d_ddot
 
 
-def coupling_point_in_world(x: ca.SX, point_in_body: ca.SX) -> ca.SX:
+def coupling_point_in_world(x: Expr, point_in_body: Expr) -> Expr:
     """World position [m] of a point fixed in the body with SRB state x."""
     return x[0:3] + rotation_body_to_world(x[6:9]) @ point_in_body
 
 
 def coupling_kinematics(
-    x_robot: ca.SX,
+    x_robot: Expr,
     acceleration_robot: BodyAcceleration | None,
-    point_in_robot: ca.SX,
-    x_payload: ca.SX,
+    point_in_robot: Expr,
+    x_payload: Expr,
     acceleration_payload: BodyAcceleration | None,
-    point_in_payload: ca.SX,
+    point_in_payload: Expr,
 ) -> CouplingKinematics:
     """phi and its derivatives; phi_ddot is None unless both accelerations are given."""
     e_x, e_y, e_z = ca.DM([1, 0, 0]), ca.DM([0, 1, 0]), ca.DM([0, 0, 1])
@@ -85,7 +85,7 @@ def acceleration_level_constraint(
     baumgarte: bool,
     damping_ratio: float,
     natural_frequency_rad_s: float,
-) -> ca.SX:
+) -> Expr:
     """phi_ddot = 0, or with Baumgarte stabilization phi_ddot + 2 zeta w phi_dot + w^2 phi = 0."""
     assert kinematics.phi_ddot is not None
     if not baumgarte:
@@ -94,7 +94,7 @@ def acceleration_level_constraint(
     return kinematics.phi_ddot + 2 * damping_ratio * w * kinematics.phi_dot + w * w * kinematics.phi
 
 
-def yaw_torque(x_payload: ca.SX, wrench_on_payload: ca.SX) -> ca.SX:
+def yaw_torque(x_payload: Expr, wrench_on_payload: Expr) -> Expr:
     """Torque [N m] of the wrench about the coupling's free yaw axis (payload z-axis, world)."""
     axis = rotation_body_to_world(x_payload[6:9]) @ ca.DM([0, 0, 1])
     return ca.dot(wrench_on_payload[3:6], axis)

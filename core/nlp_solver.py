@@ -54,14 +54,15 @@ class NlpSolution:
     stats: SolveStats
 
 
-def problem_key(problem: NlpProblem, solver_name: str, options: dict) -> str:
-    """Hash of the problem's expressions, the solver and its options (cache key)."""
+def problem_key(problem: NlpProblem, plugin: str) -> str:
+    """Hash of the problem's expressions and the solver plugin (cache key). Run-time solver
+    options do not change the generated derivative code, so they are not part of it."""
     function = ca.Function(
         "key", [problem.decision.vector(), problem.parameters.vector()],
         [problem.objective, problem.constraints],
     )
     digest = hashlib.sha256(function.serialize().encode())
-    digest.update(f"{solver_name}|{ca.__version__}|{sorted(options.items())!r}".encode())
+    digest.update(f"{plugin}|{ca.__version__}".encode())  # type: ignore[attr-defined]
     return digest.hexdigest()[:16]
 
 
@@ -81,9 +82,13 @@ class NlpSolver:
         if self.compiled:
             assert compiler is not None
             generator = ca.nlpsol(f"{problem.name}_gen", plugin, problem.casadi_dict(), options)
-            key = problem_key(problem, settings.name, {k: str(v) for k, v in options.items()})
-            source = compiler.library_for(problem.name, key, generator.generate_dependencies)
-        self._solver = ca.nlpsol(problem.name, plugin, source, options)
+            key = problem_key(problem, plugin)
+
+            def generate_c(path: str) -> None:
+                generator.generate_dependencies(path)
+
+            source = compiler.library_for(problem.name, key, generate_c)
+        self._solver = ca.nlpsol(problem.name, plugin, source, options)  # type: ignore[call-overload]
         self._lbg = problem.lower_constraints
         self._ubg = problem.upper_constraints
         self._warm_duals = settings.name != "ipopt-reference"
@@ -104,6 +109,9 @@ class NlpSolver:
                 "fatrop.print_level": 0,
                 "fatrop.tol": s.tolerance,
                 "fatrop.max_iter": s.max_iterations,
+                "fatrop.mu_init": s.initial_barrier,
+                "fatrop.bound_push": s.bound_push,
+                "fatrop.bound_frac": s.bound_push,
             }
         ipopt = {
             "ipopt.print_level": 0,

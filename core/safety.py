@@ -19,35 +19,37 @@ from __future__ import annotations
 
 import casadi as ca
 
+from core.srb_model import Expr
+
 OBSTACLE_PARAMETER_SIZE = 5
 # An unused obstacle slot is parked here: far away, so its barrier is inactive.
 PARKED_OBSTACLE = (1e4, 1e4, 0.0, 0.0, 0.0)
 
 
-def obstacle_position(obstacle: ca.SX, stage: int, sample_period_s: float) -> ca.SX:
+def obstacle_position(obstacle: Expr, stage: int, sample_period_s: float) -> Expr:
     """Predicted planar obstacle position [m] at ``stage`` (constant-velocity model)."""
     return obstacle[0:2] + stage * sample_period_s * obstacle[2:4]
 
 
-def safety_function(position_xy: ca.SX, obstacle_xy: ca.SX, distance_m: ca.SX) -> ca.SX:
+def safety_function(position_xy: Expr, obstacle_xy: Expr, distance_m: Expr) -> Expr:
     """h = ||p - o|| - d [m]."""
     return ca.norm_2(position_xy - obstacle_xy) - distance_m
 
 
-def hocbf_condition(h0: ca.SX, h1: ca.SX, h2: ca.SX, alpha1: float, alpha2: float) -> ca.SX:
+def hocbf_condition(h0: Expr, h1: Expr, h2: Expr, alpha1: float, alpha2: float) -> Expr:
     """Left-hand side of the DT-HOCBF condition (>= 0 is safe)."""
     return h2 - (2 - alpha1 - alpha2) * h1 + (1 - alpha1) * (1 - alpha2) * h0
 
 
 def stagewise_hocbf(
-    x: ca.SX,
-    linear_acceleration: ca.SX,
-    obstacle: ca.SX,
+    x: Expr,
+    linear_acceleration: Expr,
+    obstacle: Expr,
     stage: int,
     sample_period_s: float,
     alpha1: float,
     alpha2: float,
-) -> ca.SX:
+) -> Expr:
     """DT-HOCBF centred on ``stage`` (>= 1) from that stage's state and acceleration only."""
     ts = sample_period_s
     p, v = x[0:2], x[3:5]
@@ -62,13 +64,13 @@ def stagewise_hocbf(
 
 
 def stagewise_first_order(
-    x: ca.SX,
-    linear_acceleration: ca.SX,
-    obstacle: ca.SX,
+    x: Expr,
+    linear_acceleration: Expr,
+    obstacle: Expr,
     stage: int,
     sample_period_s: float,
     alpha1: float,
-) -> ca.SX:
+) -> Expr:
     """psi1_k = h_{k+1} - (1 - a1) h_k from stage k's state and acceleration (>= 0 is safe).
 
     The DT-HOCBF keeps {psi1 >= 0} invariant only for an exact model. Against a plant whose

@@ -92,6 +92,10 @@ class SolverSettings(StrictModel):
     max_iterations: int = Field(50, ge=1)
     tolerance: float = Field(1e-4, gt=0)
     objective_scale: float = Field(1e-5, gt=0)
+    # Interior-point warm start of fatrop (measured: 14.4 -> 4.3 iterations per local solve in
+    # closed loop versus fatrop's defaults mu_init 1e-1, bound_push 1e-2).
+    initial_barrier: float = Field(1e-4, gt=0)
+    bound_push: float = Field(1e-5, gt=0)
 
 
 class MpcSettings(StrictModel):

@@ -17,9 +17,15 @@ barrier condition in terms of a single stage.
 from __future__ import annotations
 
 from dataclasses import dataclass
+from typing import Any, TypeAlias
 
 import casadi as ca
 import numpy as np
+
+# A CasADi SX/DM expression or a float: the model functions accept constants (the plant's fixed
+# masses) as well as symbols. Typed as Any because CasADi's stubs reject mixed SX/DM/float
+# arithmetic that CasADi itself accepts.
+Expr: TypeAlias = Any
 
 STATE_SIZE = 12
 GRF_SIZE = 12
@@ -54,12 +60,12 @@ class SrbParameters:
             raise ValueError(f"{self.name}: inertia must be a 3x3 positive definite matrix")
 
 
-def split_state(x: ca.SX) -> tuple[ca.SX, ca.SX, ca.SX, ca.SX]:
+def split_state(x: Expr) -> tuple[ca.SX, ca.SX, ca.SX, ca.SX]:
     """(p, v, Theta, omega) slices of a 12-vector."""
     return x[0:3], x[3:6], x[6:9], x[9:12]
 
 
-def rotation_body_to_world(euler: ca.SX) -> ca.SX:
+def rotation_body_to_world(euler: Expr) -> Expr:
     """R = Rz(yaw) Ry(pitch) Rx(roll) for Theta = (roll, pitch, yaw)."""
     cr, sr = ca.cos(euler[0]), ca.sin(euler[0])
     cp, sp = ca.cos(euler[1]), ca.sin(euler[1])
@@ -71,7 +77,7 @@ def rotation_body_to_world(euler: ca.SX) -> ca.SX:
     )
 
 
-def euler_rates_from_angular_velocity(euler: ca.SX, omega_in_world: ca.SX) -> ca.SX:
+def euler_rates_from_angular_velocity(euler: Expr, omega_in_world: Expr) -> Expr:
     """Theta_dot = E(Theta)^-1 omega for the Rz Ry Rx convention (singular at pitch = +-90 deg)."""
     cp, sp = ca.cos(euler[1]), ca.sin(euler[1])
     cy, sy = ca.cos(euler[2]), ca.sin(euler[2])
@@ -86,11 +92,11 @@ def euler_rates_from_angular_velocity(euler: ca.SX, omega_in_world: ca.SX) -> ca
 class BodyAcceleration:
     """Linear [m/s^2] and angular [rad/s^2] acceleration of a body, world frame."""
 
-    linear: ca.SX
-    angular: ca.SX
+    linear: Expr
+    angular: Expr
 
 
-def inertia_matrix(entries: ca.SX) -> ca.SX:
+def inertia_matrix(entries: Expr) -> Expr:
     """3x3 symmetric inertia from its 6 entries (Ixx, Ixy, Ixz, Iyy, Iyz, Izz)."""
     xx, xy, xz, yy, yz, zz = (entries[i] for i in range(6))
     return ca.vertcat(ca.horzcat(xx, xy, xz), ca.horzcat(xy, yy, yz), ca.horzcat(xz, yz, zz))
@@ -103,11 +109,11 @@ def inertia_entries(inertia: np.ndarray) -> np.ndarray:
 
 
 def rigid_body_acceleration(
-    mass_kg: ca.SX,
-    inertia_in_body: ca.SX,
-    x: ca.SX,
-    force_in_world: ca.SX,
-    torque_about_com_in_world: ca.SX,
+    mass_kg: Expr,
+    inertia_in_body: Expr,
+    x: Expr,
+    force_in_world: Expr,
+    torque_about_com_in_world: Expr,
     gravity_m_s2: float,
 ) -> BodyAcceleration:
     """Newton-Euler for one rigid body given the total external force and torque (no gravity).
@@ -125,13 +131,13 @@ def rigid_body_acceleration(
 
 
 def robot_acceleration(
-    mass_kg: ca.SX,
-    inertia_in_body: ca.SX,
-    x: ca.SX,
-    grf: ca.SX,
-    feet_in_world: ca.SX,
-    coupling_point_in_world: ca.SX,
-    wrench_on_payload: ca.SX,
+    mass_kg: Expr,
+    inertia_in_body: Expr,
+    x: Expr,
+    grf: Expr,
+    feet_in_world: Expr,
+    coupling_point_in_world: Expr,
+    wrench_on_payload: Expr,
     gravity_m_s2: float,
 ) -> BodyAcceleration:
     """Trunk acceleration under 4 GRFs (12-vector, world) at feet_in_world (3x4 matrix, world)
@@ -147,9 +153,9 @@ def robot_acceleration(
 
 
 def payload_acceleration(
-    mass_kg: ca.SX,
-    inertia_in_body: ca.SX,
-    x: ca.SX,
+    mass_kg: Expr,
+    inertia_in_body: Expr,
+    x: Expr,
     coupling_points_in_world: list[ca.SX],
     wrenches_on_payload: list[ca.SX],
     gravity_m_s2: float,
@@ -164,7 +170,7 @@ def payload_acceleration(
     return rigid_body_acceleration(mass_kg, inertia_in_body, x, force, torque, gravity_m_s2)
 
 
-def semi_implicit_euler_step(x: ca.SX, acceleration: BodyAcceleration, dt_s: float) -> ca.SX:
+def semi_implicit_euler_step(x: Expr, acceleration: BodyAcceleration, dt_s: float) -> Expr:
     """One semi-implicit Euler step of the SRB state (see module docstring)."""
     p, v, euler, omega = split_state(x)
     v_next = v + dt_s * acceleration.linear

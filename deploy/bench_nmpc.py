@@ -59,7 +59,7 @@ def _row(mode: str, agents: int, solver: str, variables: int, result: ClosedLoop
 
 
 def run_bench(agent_counts: list[int], solver: str, duration_s: float, parallel: bool,
-              include_reference: bool, log=print) -> list[BenchRow]:
+              include_reference: bool, compiled: bool = True, log=print) -> list[BenchRow]:
     rows = []
     cache = CompiledCodeCache()
     for agents in agent_counts:
@@ -69,8 +69,10 @@ def run_bench(agent_counts: list[int], solver: str, duration_s: float, parallel:
         if include_reference:
             configs.append(("distributed", "ipopt-reference"))
         for mode, name in configs:
-            settings = MpcSettings(solver=SolverSettings(name=name))  # type: ignore[arg-type]
+            settings = MpcSettings(solver=SolverSettings(
+                name=name, compiled=compiled))
             log(f"  {agents} agents, {mode}, {name}: building (compiled code is cached)...")
+            controller: CentralizedMpc | DistributedMpc
             if mode == "centralized":
                 controller = CentralizedMpc(team, settings, compiler=cache)
                 variables = controller.problem.nlp.variable_count

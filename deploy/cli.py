@@ -14,7 +14,7 @@ def _bench_nmpc(args: argparse.Namespace) -> int:
           f"{args.duration} s closed loop each, {'process' if args.parallel else 'serial'} "
           "executor")
     rows = run_bench(args.agents, args.solver, args.duration, args.parallel,
-                     not args.no_reference)
+                     not args.no_reference, compiled=not args.interpreted)
     print(format_table(rows))
     if args.json:
         write_json(rows, Path(args.json))
@@ -42,6 +42,8 @@ def build_parser() -> argparse.ArgumentParser:
                       help="run ADMM local solves serially instead of one process per agent")
     nmpc.add_argument("--no-reference", action="store_true",
                       help="skip the paper-faithful ipopt-reference rows")
+    nmpc.add_argument("--interpreted", action="store_true",
+                      help="do not compile derivative code (quick smoke runs; slower solves)")
     nmpc.add_argument("--json", help="also write the figures as JSON {rows: [...]}")
     nmpc.set_defaults(handler=_bench_nmpc)
 
