@@ -16,13 +16,78 @@ import numpy as np
 
 from core.admm_executor import LocalSolverSpec, SerialExecutor
 from core.admm_mpc import DistributedMpc
-from core.centralized_mpc import CentralizedMpc
+from core.centralized_mpc import CentralizedMpc, initial_guess
 from core.closed_loop import ClosedLoopResult, run_closed_loop
 from core.settings import MpcSettings, SolverSettings
 from core.standard_scenarios import standard_scenario
 from deploy.codegen_cache import CompiledCodeCache
 from deploy.process_executor import ProcessExecutor
 from drivers.robot_descriptions import srb_parameters
+
+
+@dataclass
+class AccuracyCheck:
+    """Same local NLP, same parameters and initial guess, solved by this solver and by
+    ipopt-reference: largest differences over the sampled NMPC decisions."""
+
+    agents: int
+    solver: str
+    samples: int
+    max_grf_difference_n: float
+    max_payload_position_difference_m: float
+    max_objective_relative_difference: float
+
+
+def accuracy_check(team, settings: MpcSettings, inputs_samples: list, cache
+                   ) -> AccuracyCheck:
+    """Solve agent 0's local NLP of each sampled decision with both configurations."""
+    reference = MpcSettings(solver=SolverSettings(name="ipopt-reference"))
+    fast = LocalSolverSpec(settings, team.agent_count, cache).build()
+    slow = LocalSolverSpec(reference, team.agent_count, cache).build()
+    problem = DistributedMpc(team, settings, executor=_NoExecutor()).problem
+    grf, payload, objective = 0.0, 0.0, 0.0
+    layout = problem.nlp.decision
+    for inputs in inputs_samples:
+        guess = initial_guess(problem, team, inputs, None, agent=0)
+        target = problem.shared_trajectory(guess)
+        parameters = problem.parameter_vector(team, inputs, agent=0, consensus_target=target)
+        bounds = problem.decision_bounds(inputs.contacts, agent=0)
+        a = fast.solve(guess, parameters, *bounds)
+        b = slow.solve(guess, parameters, *bounds)
+        grf = max(grf, float(np.max(np.abs(layout.get(a.decision, "grf_self@0")
+                                           - layout.get(b.decision, "grf_self@0")))))
+        payload = max(payload, max(float(np.max(np.abs(
+            layout.get(a.decision, f"payload@{k}")[0:3] - layout.get(b.decision, f"payload@{k}")[0:3])))
+            for k in range(problem.horizon_steps + 1)))
+        objective = max(objective, abs(a.stats.objective - b.stats.objective)
+                        / max(abs(b.stats.objective), 1e-12))
+    return AccuracyCheck(team.agent_count, settings.solver.name, len(inputs_samples), grf,
+                         payload, objective)
+
+
+class _SampleRecorder:
+    """Wraps ``update`` and keeps every 20th decision's inputs (at most 10)."""
+
+    def __init__(self, update) -> None:
+        self.update = update
+        self.samples: list = []
+        self.seen = 0
+
+    def __call__(self, inputs):
+        if self.seen % 20 == 0 and len(self.samples) < 10:
+            self.samples.append(inputs)
+        self.seen += 1
+        return self.update(inputs)
+
+
+class _NoExecutor:
+    """Placeholder executor for building a problem layout without solvers."""
+
+    def solve_all(self, requests):
+        raise RuntimeError("not for solving")
+
+    def close(self) -> None:
+        pass
 
 
 @dataclass
@@ -59,8 +124,10 @@ def _row(mode: str, agents: int, solver: str, variables: int, result: ClosedLoop
 
 
 def run_bench(agent_counts: list[int], solver: str, duration_s: float, parallel: bool,
-              include_reference: bool, compiled: bool = True, log=print) -> list[BenchRow]:
+              include_reference: bool, compiled: bool = True, log=print
+              ) -> tuple[list[BenchRow], list[AccuracyCheck]]:
     rows = []
+    checks = []
     cache = CompiledCodeCache()
     for agents in agent_counts:
         scenario = standard_scenario(agents, srb_parameters)
@@ -81,17 +148,21 @@ def run_bench(agent_counts: list[int], solver: str, duration_s: float, parallel:
                 executor = ProcessExecutor(spec) if parallel else SerialExecutor(spec)
                 controller = DistributedMpc(team, settings, executor=executor)
                 variables = controller.problem.nlp.variable_count
+            recorder = _SampleRecorder(controller.update)
+            controller.update = recorder  # type: ignore[method-assign]
             try:
                 result = run_closed_loop(controller, team, team, settings, scenario.reference,
                                          scenario.obstacles, duration_s)
             finally:
                 if isinstance(controller, DistributedMpc):
                     controller.close()
+            if mode == "distributed" and name != "ipopt-reference" and include_reference:
+                checks.append(accuracy_check(team, settings, recorder.samples, cache))
             row = _row(mode, agents, name, variables, result)
             log(f"    median update {row.update_ms['median']:.2f} ms, "
                 f"success {row.success_rate:.0%}, min h {row.min_h_m:.3f} m")
             rows.append(row)
-    return rows
+    return rows, checks
 
 
 def format_table(rows: list[BenchRow]) -> str:
@@ -119,5 +190,16 @@ def format_table(rows: list[BenchRow]) -> str:
     return "\n".join(lines)
 
 
-def write_json(rows: list[BenchRow], path: Path) -> None:
-    path.write_text(json.dumps({"rows": [r.as_dict() for r in rows]}, indent=2))
+def format_accuracy(checks: list[AccuracyCheck]) -> str:
+    lines = ["local NLP accuracy vs ipopt-reference (same parameters and initial guess):"]
+    for c in checks:
+        lines.append(f"  {c.agents} agents, {c.solver}: {c.samples} decisions, max |dGRF| "
+                     f"{c.max_grf_difference_n:.3f} N, max |d payload p| "
+                     f"{c.max_payload_position_difference_m:.2e} m, max rel d objective "
+                     f"{c.max_objective_relative_difference:.1e}")
+    return "\n".join(lines)
+
+
+def write_json(rows: list[BenchRow], checks: list[AccuracyCheck], path: Path) -> None:
+    path.write_text(json.dumps({"rows": [r.as_dict() for r in rows],
+                                "accuracy": [c.__dict__ for c in checks]}, indent=2))

@@ -8,16 +8,18 @@ from pathlib import Path
 
 
 def _bench_nmpc(args: argparse.Namespace) -> int:
-    from deploy.bench_nmpc import format_table, run_bench, write_json
+    from deploy.bench_nmpc import format_accuracy, format_table, run_bench, write_json
 
     print(f"porter bench nmpc: agents {args.agents}, solver {args.solver}, "
           f"{args.duration} s closed loop each, {'process' if args.parallel else 'serial'} "
           "executor")
-    rows = run_bench(args.agents, args.solver, args.duration, args.parallel,
+    rows, checks = run_bench(args.agents, args.solver, args.duration, args.parallel,
                      not args.no_reference, compiled=not args.interpreted)
     print(format_table(rows))
+    if checks:
+        print(format_accuracy(checks))
     if args.json:
-        write_json(rows, Path(args.json))
+        write_json(rows, checks, Path(args.json))
         print(f"wrote {args.json}")
     return 0
 

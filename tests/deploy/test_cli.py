@@ -17,7 +17,11 @@ def test_bench_nmpc_writes_table_and_json(tmp_path: Path, capsys: pytest.Capture
     assert code == 0
     printed = capsys.readouterr().out
     assert "dist/cent" in printed and "ipopt-reference" in printed
-    rows = json.loads(out.read_text())["rows"]
+    figures = json.loads(out.read_text())
+    rows = figures["rows"]
+    (check,) = figures["accuracy"]
+    assert check["agents"] == 2 and check["samples"] >= 1
+    assert 0 <= check["max_grf_difference_n"] < 50
     keys = {(r["mode"], r["agents"], r["solver"]) for r in rows}
     assert keys == {("centralized", 2, "fatrop"), ("distributed", 2, "fatrop"),
                     ("distributed", 2, "ipopt-reference")}
