@@ -41,6 +41,22 @@ def hocbf_condition(h0: Expr, h1: Expr, h2: Expr, alpha1: float, alpha2: float) 
     return h2 - (2 - alpha1 - alpha2) * h1 + (1 - alpha1) * (1 - alpha2) * h0
 
 
+def stage_safety_values(
+    x: Expr, linear_acceleration: Expr, obstacle: Expr, stage: int, sample_period_s: float
+) -> tuple[Expr, Expr, Expr]:
+    """(h_{k-1}, h_k, h_{k+1}) for k = ``stage`` (>= 1) from stage k's state and acceleration."""
+    ts = sample_period_s
+    p, v = x[0:2], x[3:5]
+    p_prev = p - ts * v
+    p_next = p + ts * (v + ts * linear_acceleration[0:2])
+    d = obstacle[4]
+    h_prev, h, h_next = (
+        safety_function(pos, obstacle_position(obstacle, s, ts), d)
+        for pos, s in ((p_prev, stage - 1), (p, stage), (p_next, stage + 1))
+    )
+    return h_prev, h, h_next
+
+
 def stagewise_hocbf(
     x: Expr,
     linear_acceleration: Expr,
@@ -51,16 +67,19 @@ def stagewise_hocbf(
     alpha2: float,
 ) -> Expr:
     """DT-HOCBF centred on ``stage`` (>= 1) from that stage's state and acceleration only."""
-    ts = sample_period_s
-    p, v = x[0:2], x[3:5]
-    p_prev = p - ts * v
-    p_next = p + ts * (v + ts * linear_acceleration[0:2])
-    d = obstacle[4]
-    h = [
-        safety_function(pos, obstacle_position(obstacle, s, ts), d)
-        for pos, s in ((p_prev, stage - 1), (p, stage), (p_next, stage + 1))
-    ]
-    return hocbf_condition(h[0], h[1], h[2], alpha1, alpha2)
+    h = stage_safety_values(x, linear_acceleration, obstacle, stage, sample_period_s)
+    return hocbf_condition(*h, alpha1, alpha2)
+
+
+def first_order_condition(h: Expr, h_next: Expr, alpha1: float) -> Expr:
+    """psi1_k = h_{k+1} - (1 - a1) h_k (>= 0 is safe).
+
+    The DT-HOCBF keeps {psi1 >= 0} invariant only for an exact model. Against a plant whose
+    motion differs from the semi-implicit Euler prediction (by Ts^2 a / 2 per step for a held
+    force), the small alpha2 lets psi1 drift negative step after step; enforcing psi1 >= 0 from
+    stage 1 on (stage 0 is fixed by the measurement) bounds that drift.
+    """
+    return h_next - (1 - alpha1) * h
 
 
 def stagewise_first_order(
@@ -71,17 +90,6 @@ def stagewise_first_order(
     sample_period_s: float,
     alpha1: float,
 ) -> Expr:
-    """psi1_k = h_{k+1} - (1 - a1) h_k from stage k's state and acceleration (>= 0 is safe).
-
-    The DT-HOCBF keeps {psi1 >= 0} invariant only for an exact model. Against a plant whose
-    motion differs from the semi-implicit Euler prediction (by Ts^2 a / 2 per step for a held
-    force), the small alpha2 lets psi1 drift negative step after step; enforcing psi1 >= 0 from
-    stage 1 on (stage 0 is fixed by the measurement) bounds that drift.
-    """
-    ts = sample_period_s
-    p, v = x[0:2], x[3:5]
-    p_next = p + ts * (v + ts * linear_acceleration[0:2])
-    d = obstacle[4]
-    h_now = safety_function(p, obstacle_position(obstacle, stage, ts), d)
-    h_next = safety_function(p_next, obstacle_position(obstacle, stage + 1, ts), d)
-    return h_next - (1 - alpha1) * h_now
+    """psi1 at ``stage`` (>= 1) from that stage's state and acceleration only."""
+    _, h, h_next = stage_safety_values(x, linear_acceleration, obstacle, stage, sample_period_s)
+    return first_order_condition(h, h_next, alpha1)
