@@ -124,7 +124,8 @@ def _row(mode: str, agents: int, solver: str, variables: int, result: ClosedLoop
 
 
 def run_bench(agent_counts: list[int], solver: str, duration_s: float, parallel: bool,
-              include_reference: bool, compiled: bool = True, log=print
+              include_reference: bool, compiled: bool = True, log=print,
+              base_settings: MpcSettings | None = None
               ) -> tuple[list[BenchRow], list[AccuracyCheck]]:
     rows = []
     checks = []
@@ -136,8 +137,9 @@ def run_bench(agent_counts: list[int], solver: str, duration_s: float, parallel:
         if include_reference:
             configs.append(("distributed", "ipopt-reference"))
         for mode, name in configs:
-            settings = MpcSettings(solver=SolverSettings(
-                name=name, compiled=compiled))
+            base = base_settings or MpcSettings()
+            settings = base.model_copy(update={"solver": base.solver.model_copy(
+                update={"name": name, "compiled": compiled})})
             log(f"  {agents} agents, {mode}, {name}: building (compiled code is cached)...")
             controller: CentralizedMpc | DistributedMpc
             if mode == "centralized":

@@ -5,6 +5,18 @@ from __future__ import annotations
 import argparse
 import sys
 from pathlib import Path
+from typing import TYPE_CHECKING
+
+if TYPE_CHECKING:
+    from core.settings import MpcSettings
+
+
+def mpc_settings(args: argparse.Namespace) -> MpcSettings:
+    """``MpcSettings`` from ``--config`` (YAML overrides of the paper defaults) or defaults."""
+    from core.settings import MpcSettings
+    from deploy.config_files import load_settings
+
+    return load_settings(args.config, MpcSettings) if args.config else MpcSettings()
 
 
 def _bench_nmpc(args: argparse.Namespace) -> int:
@@ -14,7 +26,8 @@ def _bench_nmpc(args: argparse.Namespace) -> int:
           f"{args.duration} s closed loop each, {'process' if args.parallel else 'serial'} "
           "executor")
     rows, checks = run_bench(args.agents, args.solver, args.duration, args.parallel,
-                     not args.no_reference, compiled=not args.interpreted)
+                             not args.no_reference, compiled=not args.interpreted,
+                             base_settings=mpc_settings(args))
     print(format_table(rows))
     if checks:
         print(format_accuracy(checks))
@@ -27,7 +40,7 @@ def _bench_nmpc(args: argparse.Namespace) -> int:
 def _sim(args: argparse.Namespace) -> int:
     from deploy.srb_sim import run_srb_sim
 
-    return run_srb_sim(args)
+    return run_srb_sim(args, mpc_settings(args))
 
 
 def build_parser() -> argparse.ArgumentParser:
@@ -47,6 +60,7 @@ def build_parser() -> argparse.ArgumentParser:
     nmpc.add_argument("--interpreted", action="store_true",
                       help="do not compile derivative code (quick smoke runs; slower solves)")
     nmpc.add_argument("--json", help="also write the figures as JSON {rows: [...]}")
+    nmpc.add_argument("--config", help="YAML file overriding MpcSettings fields")
     nmpc.set_defaults(handler=_bench_nmpc)
 
     sim = commands.add_parser("sim", help="run a closed-loop scenario")
@@ -54,13 +68,20 @@ def build_parser() -> argparse.ArgumentParser:
     sim.add_argument("--mode", default="distributed", choices=["distributed", "centralized"])
     sim.add_argument("--duration", type=float, default=10.0)
     sim.add_argument("--json", help="write the summary metrics as JSON")
+    sim.add_argument("--config", help="YAML file overriding MpcSettings fields")
     sim.set_defaults(handler=_sim)
     return parser
 
 
 def main(argv: list[str] | None = None) -> int:
+    from deploy.config_files import ConfigError
+
     args = build_parser().parse_args(argv)
-    return int(args.handler(args))
+    try:
+        return int(args.handler(args))
+    except ConfigError as error:
+        print(f"porter: {error}", file=sys.stderr)
+        return 2
 
 
 if __name__ == "__main__":

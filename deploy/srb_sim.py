@@ -57,9 +57,8 @@ def summarize(name: str, result: ClosedLoopResult, goal_m: np.ndarray, wall_s: f
     return summary
 
 
-def run_srb_sim(args: argparse.Namespace) -> int:
+def run_srb_sim(args: argparse.Namespace, settings: MpcSettings) -> int:
     scenario = standard_scenario(args.agents, srb_parameters)
-    settings = MpcSettings()
     cache = CompiledCodeCache()
     print(f"porter sim: standard scenario, {args.agents} agents, {args.mode} NMPC, "
           "SRB plant backend (MuJoCo backend not built yet); first start compiles the NLP")

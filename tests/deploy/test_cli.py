@@ -38,3 +38,12 @@ def test_unknown_command_is_rejected(capsys: pytest.CaptureFixture) -> None:
         main(["fly"])
     assert error.value.code == 2
     assert "invalid choice" in capsys.readouterr().err
+
+
+def test_bad_config_file_is_a_clear_error(tmp_path: Path, capsys: pytest.CaptureFixture) -> None:
+    config = tmp_path / "mpc.yaml"
+    config.write_text("admm:\n  iterations: -1\n")
+    code = main(["bench", "nmpc", "--agents", "2", "--duration", "0.1", "--interpreted",
+                 "--config", str(config)])
+    assert code == 2
+    assert "admm.iterations" in capsys.readouterr().err
