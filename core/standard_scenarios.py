@@ -42,11 +42,21 @@ def ring_team_settings(robot_types: list[str], robot_parameters: Callable[[str],
     return TeamSettings(agents=agents, payload=PayloadSettings(mass_kg=payload_mass_kg))
 
 
-def standard_scenario(agent_count: int, robot_parameters: Callable[[str], SrbParameters]
+def standard_scenario(agent_count: int, robot_parameters: Callable[[str], SrbParameters],
+                      safety_distance_m: float = 0.6, intrusion_m: float = 0.1
                       ) -> StandardScenario:
-    """Go2 team (two Go2 + one A1 for three agents, as in the paper's experiments)."""
+    """Go2 team (two Go2 + one A1 for three agents, as in the paper's experiments).
+
+    Two obstacles, left then right of the straight reference, each placed so that the widest
+    body of the team would pass ``intrusion_m`` inside its safety margin: the CBFs must bend the
+    path, whatever the team size.
+    """
     types = ["go2", "go2", "a1"] if agent_count == 3 else ["go2"] * agent_count
     team = TeamModel.from_settings(ring_team_settings(types, robot_parameters), robot_parameters)
     reference = WaypointReference(np.array([[0.0, 0.0], [4.0, 0.0]]), 0.3, PAYLOAD_HEIGHT_M)
-    obstacles = [Obstacle((1.3, 1.05), radius_m=0.1), Obstacle((2.6, -1.1), radius_m=0.1)]
+    radius = 0.1
+    half_width = float(np.max(np.abs(team.coupling_points_in_payload_m[:, 1])))
+    offset = half_width + safety_distance_m + radius - intrusion_m
+    obstacles = [Obstacle((1.2, offset), radius_m=radius),
+                 Obstacle((2.2, -offset), radius_m=radius)]
     return StandardScenario(team, reference, obstacles)

@@ -52,7 +52,7 @@ def build_parser() -> argparse.ArgumentParser:
     nmpc = bench_kinds.add_parser("nmpc", help="centralized vs ADMM NMPC update times")
     nmpc.add_argument("--agents", type=int, nargs="+", default=[2, 3, 4])
     nmpc.add_argument("--solver", default="fatrop", choices=["fatrop", "ipopt"])
-    nmpc.add_argument("--duration", type=float, default=5.0, help="closed-loop seconds per row")
+    nmpc.add_argument("--duration", type=float, default=6.0, help="closed-loop seconds per row")
     nmpc.add_argument("--serial", dest="parallel", action="store_false",
                       help="run ADMM local solves serially instead of one process per agent")
     nmpc.add_argument("--no-reference", action="store_true",
