@@ -53,7 +53,7 @@ def standard_scenario(agent_count: int, robot_parameters: Callable[[str], SrbPar
     """
     types = ["go2", "go2", "a1"] if agent_count == 3 else ["go2"] * agent_count
     team = TeamModel.from_settings(ring_team_settings(types, robot_parameters), robot_parameters)
-    reference = WaypointReference(np.array([[0.0, 0.0], [4.0, 0.0]]), 0.3, PAYLOAD_HEIGHT_M)
+    reference = WaypointReference(np.array([[0.0, 0.0], [3.0, 0.0]]), 0.3, PAYLOAD_HEIGHT_M)
     radius = 0.1
     half_width = float(np.max(np.abs(team.coupling_points_in_payload_m[:, 1])))
     offset = half_width + safety_distance_m + radius - intrusion_m

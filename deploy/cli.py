@@ -66,7 +66,8 @@ def build_parser() -> argparse.ArgumentParser:
     sim = commands.add_parser("sim", help="run a closed-loop scenario")
     sim.add_argument("--agents", type=int, default=2)
     sim.add_argument("--mode", default="distributed", choices=["distributed", "centralized"])
-    sim.add_argument("--duration", type=float, default=10.0)
+    sim.add_argument("--duration", type=float, default=12.0,
+                     help="simulated seconds (the reference reaches its goal at 10 s)")
     sim.add_argument("--json", help="write the summary metrics as JSON")
     sim.add_argument("--config", help="YAML file overriding MpcSettings fields")
     sim.set_defaults(handler=_sim)

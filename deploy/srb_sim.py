@@ -51,7 +51,8 @@ def summarize(name: str, result: ClosedLoopResult, goal_m: np.ndarray, wall_s: f
                            "p95": float(np.percentile(updates, 95)),
                            "max": float(np.max(updates))},
         "deadline_misses": int(np.sum(updates > 1e3 * DEADLINE_S)),
-        "solver_failures": int(len(result.success) - np.sum(result.success)),
+        "failed_solves": int(np.sum(result.failed_solves)),
+        "flagged_plans": int(len(result.success) - np.sum(result.success)),
         "real_time_factor": duration / wall_s if wall_s > 0 else float("inf"),
     }
     return summary
