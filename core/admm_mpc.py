@@ -64,6 +64,12 @@ class DistributedMpc:
         guesses = [initial_guess(self.problem, self.team, inputs, self._previous[i], agent=i)
                    for i in range(na)]
         bounds = [self.problem.decision_bounds(inputs.contacts, agent=i) for i in range(na)]
+        # Everything but the consensus target is fixed during the update: build it once.
+        zero_target = np.zeros(self.weights.size)
+        parameters = [self.problem.parameter_vector(self.team, inputs, agent=i,
+                                                    consensus_target=zero_target)
+                      for i in range(na)]
+        target_slice = self.problem.nlp.parameters.slice("consensus_target")
         if self._consensus is None:
             consensus = np.mean([self.problem.shared_trajectory(g) for g in guesses], axis=0)
             duals = np.zeros_like(self._duals)
@@ -76,11 +82,12 @@ class DistributedMpc:
             requests = []
             for i in range(na):
                 warm = solutions[i] if solutions else self._previous[i]
+                agent_parameters = parameters[i].copy()
+                agent_parameters[target_slice] = consensus - duals[i]
                 requests.append(LocalSolveRequest(
                     agent=i,
                     initial_guess=solutions[i].decision if solutions else guesses[i],
-                    parameters=self.problem.parameter_vector(
-                        self.team, inputs, agent=i, consensus_target=consensus - duals[i]),
+                    parameters=agent_parameters,
                     lower_bounds=bounds[i][0],
                     upper_bounds=bounds[i][1],
                     constraint_multipliers=None if warm is None else warm.constraint_multipliers,

@@ -64,7 +64,7 @@ class TransportProblem:
     def horizon_steps(self) -> int:
         return self.settings.horizon_steps
 
-    def robot_keys(self, agent: int | None = None) -> list[str]:
+    def robot_keys(self) -> list[str]:
         """Block-name keys of the robots in this problem (``self`` in a local problem)."""
         return [SELF] if self.local else [str(r) for r in range(self.agent_count)]
 

@@ -12,7 +12,6 @@ from __future__ import annotations
 import numpy as np
 
 from core.layout import BlockLayout
-from core.srb_model import STATE_SIZE
 
 
 def shift_solution(layout: BlockLayout, horizon_steps: int, solution: np.ndarray) -> np.ndarray:
@@ -57,10 +56,3 @@ def conform_forces(
             elif forces[leg, 2] < minimum_stance_force_n:
                 forces[leg] = nominal[leg]
         guess[block] = forces.reshape(-1)
-
-
-def constant_state_guess(layout: BlockLayout, horizon_steps: int, block: str,
-                         state: np.ndarray) -> dict[str, np.ndarray]:
-    """Block values holding ``state`` (12,) at every stage of ``block``."""
-    return {f"{block}@{k}": np.asarray(state, float).reshape(STATE_SIZE)
-            for k in range(horizon_steps + 1)}
