@@ -25,6 +25,7 @@ class LocalSolveRequest:
     upper_bounds: np.ndarray
     constraint_multipliers: np.ndarray | None = None
     bound_multipliers: np.ndarray | None = None
+    warm_start: bool = True  # False when the guess is not a previous solution
 
 
 @dataclass(frozen=True)
@@ -43,7 +44,7 @@ class LocalSolverSpec:
 def solve_request(solver: NlpSolver, request: LocalSolveRequest) -> NlpSolution:
     return solver.solve(
         request.initial_guess, request.parameters, request.lower_bounds, request.upper_bounds,
-        request.constraint_multipliers, request.bound_multipliers,
+        request.constraint_multipliers, request.bound_multipliers, request.warm_start,
     )
 
 

@@ -92,6 +92,7 @@ class DistributedMpc:
                     upper_bounds=bounds[i][1],
                     constraint_multipliers=None if warm is None else warm.constraint_multipliers,
                     bound_multipliers=None if warm is None else warm.bound_multipliers,
+                    warm_start=warm is not None,
                 ))
             results = self.executor.solve_all(requests)
             solutions = [result if np.all(np.isfinite(result.decision))

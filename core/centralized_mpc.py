@@ -46,6 +46,7 @@ class CentralizedMpc:
             guess, parameters, lower, upper,
             None if previous is None else previous.constraint_multipliers,
             None if previous is None else previous.bound_multipliers,
+            warm_start=previous is not None,
         )
         usable = bool(np.all(np.isfinite(solution.decision)))
         decision = solution.decision if usable else guess

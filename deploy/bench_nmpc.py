@@ -52,8 +52,8 @@ def accuracy_check(team, settings: MpcSettings, inputs_samples: list, cache
         target = problem.shared_trajectory(guess)
         parameters = problem.parameter_vector(team, inputs, agent=0, consensus_target=target)
         bounds = problem.decision_bounds(inputs.contacts, agent=0)
-        a = fast.solve(guess, parameters, *bounds)
-        b = slow.solve(guess, parameters, *bounds)
+        a = fast.solve(guess, parameters, *bounds, warm_start=False)
+        b = slow.solve(guess, parameters, *bounds, warm_start=False)
         grf = max(grf, float(np.max(np.abs(layout.get(a.decision, "grf_self@0")
                                            - layout.get(b.decision, "grf_self@0")))))
         payload = max(payload, max(float(np.max(np.abs(
