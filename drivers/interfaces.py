@@ -1,0 +1,108 @@
+"""The small driver interface the control loop talks to, in simulation and on robots alike.
+
+World frame (z up), SI units. Quaternions are (w, x, y, z) and rotate body vectors into the
+world frame. Per-joint arrays have 12 entries in ``drivers.mujoco_scene.LEG_JOINT_NAMES``
+order, FL, FR, RL, RR x (hip, thigh, calf); per-foot arrays have 4 entries in
+``core.srb_model.LEG_NAMES`` order. Backends map their own orders (e.g. Unitree's FR, FL, RR,
+RL motor order) to these by name, once, inside the driver.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass, field
+from typing import Protocol, runtime_checkable
+
+import numpy as np
+
+JOINT_COUNT = 12
+FOOT_COUNT = 4
+
+
+def _zeros_12() -> np.ndarray:
+    return np.zeros(JOINT_COUNT)
+
+
+@dataclass
+class JointCommand:
+    """Per-joint motor command, applied by the motor firmware law at its own (high) rate:
+
+        tau = torque_nm + kp (position_rad - q) + kd (velocity_rad_s - dq)
+
+    clipped to the motor's torque limit. kp [N m/rad], kd [N m s/rad]. The default (all zero)
+    is a limp robot.
+    """
+
+    torque_nm: np.ndarray = field(default_factory=_zeros_12)
+    position_rad: np.ndarray = field(default_factory=_zeros_12)
+    velocity_rad_s: np.ndarray = field(default_factory=_zeros_12)
+    kp: np.ndarray = field(default_factory=_zeros_12)
+    kd: np.ndarray = field(default_factory=_zeros_12)
+
+    def __post_init__(self) -> None:
+        for name in ("torque_nm", "position_rad", "velocity_rad_s", "kp", "kd"):
+            value = np.broadcast_to(np.asarray(getattr(self, name), dtype=float), (JOINT_COUNT,))
+            setattr(self, name, value.copy())
+
+    @classmethod
+    def hold(cls, position_rad: np.ndarray, kp: float, kd: float) -> JointCommand:
+        """Joint PD holding ``position_rad`` at zero velocity with no feed-forward torque."""
+        return cls(position_rad=position_rad, kp=np.full(JOINT_COUNT, kp),
+                   kd=np.full(JOINT_COUNT, kd))
+
+    def torque_for(self, position_rad: np.ndarray, velocity_rad_s: np.ndarray) -> np.ndarray:
+        """Firmware law at joint state (q [rad], dq [rad/s]) -> motor torque [N m], unclipped."""
+        return (self.torque_nm + self.kp * (self.position_rad - position_rad)
+                + self.kd * (self.velocity_rad_s - velocity_rad_s))
+
+
+@dataclass(frozen=True)
+class RobotMeasurement:
+    """One robot's state as its onboard sensors (joint encoders, IMU, state estimate) give it.
+
+    The base is the URDF root link (the trunk). ``linear_velocity_in_world_m_s`` is the base
+    origin's velocity in the world frame; ``angular_velocity_in_body_rad_s`` is in the base
+    frame (what an IMU gyroscope measures). Foot contact: ``foot_normal_force_n`` is the
+    ground's normal force on each foot [N], ``foot_contact`` whether it is positive.
+    """
+
+    time_s: float
+    position_rad: np.ndarray  # (12,)
+    velocity_rad_s: np.ndarray  # (12,)
+    torque_nm: np.ndarray  # (12,) motor torque applied in the last control period
+    position_in_world_m: np.ndarray  # (3,)
+    quaternion_wxyz: np.ndarray  # (4,) base -> world
+    linear_velocity_in_world_m_s: np.ndarray  # (3,)
+    angular_velocity_in_body_rad_s: np.ndarray  # (3,)
+    foot_contact: np.ndarray  # (4,) bool
+    foot_normal_force_n: np.ndarray  # (4,)
+
+
+Pose = tuple[np.ndarray, np.ndarray]  # (position_m (3,), quaternion_wxyz (4,)) in world
+
+
+@dataclass(frozen=True)
+class MocapFrame:
+    """Motion-capture poses of rigid bodies at ``time_s``: name -> (position [m], quaternion
+    wxyz), world frame."""
+
+    time_s: float
+    poses: dict[str, Pose]
+
+
+@runtime_checkable
+class RobotDriver(Protocol):
+    """One robot: read its sensors, send its joint command (kept until the next one)."""
+
+    @property
+    def name(self) -> str: ...
+
+    def read(self) -> RobotMeasurement: ...
+
+    def send(self, command: JointCommand) -> None: ...
+
+
+@runtime_checkable
+class MocapSource(Protocol):
+    """A motion-capture system: the most recent frame, or None before the first one."""
+
+    def latest(self) -> MocapFrame | None: ...
