@@ -45,14 +45,20 @@ class WaypointReference:
 
 def robot_state_from_payload(team: TeamModel, agent: int, payload_state: np.ndarray
                              ) -> np.ndarray:
-    """Robot state whose coupling point coincides with the payload's, same yaw, level trunk."""
+    """Robot state whose coupling point coincides with the payload's, same yaw, level trunk.
+
+    Valid for a level payload (roll = pitch = 0) turning about z only, as the references are.
+    """
     yaw = payload_state[8]
     c, s = np.cos(yaw), np.sin(yaw)
     rotation = np.array([[c, -s, 0], [s, c, 0], [0, 0, 1]])
     state = np.zeros(STATE_SIZE)
     point = payload_state[0:3] + rotation @ team.coupling_points_in_payload_m[agent]
     state[0:3] = point - rotation @ team.coupling_points_in_robot_m[agent]
-    state[3:6] = payload_state[3:6] + np.cross(payload_state[9:12], point - payload_state[0:3])
+    point_velocity = payload_state[3:6] + np.cross(payload_state[9:12],
+                                                   point - payload_state[0:3])
+    omega = np.array([0.0, 0.0, payload_state[11]])  # level trunk turning with the payload
+    state[3:6] = point_velocity - np.cross(omega, rotation @ team.coupling_points_in_robot_m[agent])
     state[8] = yaw
     state[11] = payload_state[11]
     return state
