@@ -19,14 +19,14 @@ import time
 import numpy as np
 
 from core.admm_executor import LocalSolveExecutor, LocalSolveRequest, LocalSolverSpec, SerialExecutor
-from core.centralized_mpc import decode_plan, initial_guess
 from core.mpc_inputs import MpcInputs
-from core.mpc_plan import AdmmIteration, MpcPlan
+from core.mpc_plan import AdmmIteration, MpcPlan, decode_plan
 from core.nlp_solver import NlpCompiler, NlpSolution
 from core.settings import MpcSettings
 from core.srb_model import STATE_SIZE, WRENCH_SIZE
 from core.team_model import TeamModel
 from core.transport_problem import build_transport_problem
+from core.warm_start import initial_guess
 
 
 class DistributedMpc:

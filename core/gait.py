@@ -10,6 +10,7 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
+from core.rotations import yaw_rotation
 from core.srb_model import SrbParameters
 
 # Phase offsets of FL, FR, RL, RR in a trot.
@@ -62,8 +63,7 @@ class FootholdPlanner:
     def _hips(self, state: np.ndarray) -> np.ndarray:
         """Neutral footholds under the hips (standing foot positions) for a trunk at ``state``."""
         yaw = state[8]
-        c, s = np.cos(yaw), np.sin(yaw)
-        rotation = np.array([[c, -s, 0], [s, c, 0], [0, 0, 1]])
+        rotation = yaw_rotation(yaw)
         neutral = self.robot.nominal_feet_in_body_m
         if neutral is None:
             neutral = self.robot.hip_positions_in_body_m

@@ -7,6 +7,8 @@ from dataclasses import dataclass, field
 import numpy as np
 
 from core.nlp_solver import SolveStats
+from core.team_model import TeamModel
+from core.transport_problem import TransportProblem
 
 
 @dataclass(frozen=True)
@@ -60,3 +62,24 @@ class MpcPlan:
                                  f"h = {safety_values_m[body, obstacle]:.3f} m")
         if self.warnings:
             self.success = False
+
+
+def decode_plan(problem: TransportProblem, team: TeamModel, decision: np.ndarray,
+                agent: int | None = None) -> MpcPlan:
+    """Trajectories of the robots in ``problem`` (others left zero), payload and wrenches."""
+    layout = problem.nlp.decision
+    n = problem.horizon_steps
+    na = team.agent_count
+    robots = np.zeros((na, n + 1, 12))
+    grfs = np.zeros((na, n, 12))
+    for key, r in zip(problem.robot_keys(), problem.robot_indices(agent), strict=True):
+        robots[r] = [layout.get(decision, f"robot_{key}@{k}") for k in range(n + 1)]
+        grfs[r] = [layout.get(decision, f"grf_{key}@{k}") for k in range(n)]
+    payload = np.array([layout.get(decision, f"payload@{k}") for k in range(n + 1)])
+    wrenches = np.array([[layout.get(decision, f"wrench_{j}@{k}") for k in range(n)]
+                         for j in range(na)])
+    return MpcPlan(
+        grf=grfs[:, 0].copy(), wrench=wrenches[:, 0].copy(), robot_trajectories=robots,
+        payload_trajectory=payload, grf_trajectories=grfs, wrench_trajectories=wrenches,
+        solves=[], success=True, update_time_s=0.0,
+    )

@@ -28,32 +28,12 @@ from __future__ import annotations
 
 import numpy as np
 
+from core.rotations import euler_from_rotation, rotation_from_euler
 from core.srb_model import STATE_SIZE
 from core.team_model import TeamModel
 
 # Smallest x-y spread [m] of the payload-frame coupling points for the yaw to be observable.
 MIN_COUPLING_SPREAD_M = 1e-6
-
-
-def rotation_from_euler(euler: np.ndarray) -> np.ndarray:
-    """R = Rz(yaw) Ry(pitch) Rx(roll) for Theta = (roll, pitch, yaw), NumPy (core/srb_model.py)."""
-    cr, sr = np.cos(euler[0]), np.sin(euler[0])
-    cp, sp = np.cos(euler[1]), np.sin(euler[1])
-    cy, sy = np.cos(euler[2]), np.sin(euler[2])
-    return np.array([
-        [cy * cp, cy * sp * sr - sy * cr, cy * sp * cr + sy * sr],
-        [sy * cp, sy * sp * sr + cy * cr, sy * sp * cr - cy * sr],
-        [-sp, cp * sr, cp * cr],
-    ])
-
-
-def euler_from_rotation(rotation: np.ndarray) -> np.ndarray:
-    """(roll, pitch, yaw) of R = Rz(yaw) Ry(pitch) Rx(roll), pitch in [-pi/2, pi/2]."""
-    return np.array([
-        np.arctan2(rotation[2, 1], rotation[2, 2]),
-        -np.arcsin(np.clip(rotation[2, 0], -1.0, 1.0)),
-        np.arctan2(rotation[1, 0], rotation[0, 0]),
-    ])
 
 
 def _tilt_rotation(n: np.ndarray) -> np.ndarray:

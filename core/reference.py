@@ -7,6 +7,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
+from core.rotations import yaw_rotation
 from core.srb_model import STATE_SIZE
 from core.team_model import TeamModel
 
@@ -50,8 +51,7 @@ def robot_state_from_payload(team: TeamModel, agent: int, payload_state: np.ndar
     Valid for a level payload (roll = pitch = 0) turning about z only, as the references are.
     """
     yaw = payload_state[8]
-    c, s = np.cos(yaw), np.sin(yaw)
-    rotation = np.array([[c, -s, 0], [s, c, 0], [0, 0, 1]])
+    rotation = yaw_rotation(yaw)
     state = np.zeros(STATE_SIZE)
     point = payload_state[0:3] + rotation @ team.coupling_points_in_payload_m[agent]
     state[0:3] = point - rotation @ team.coupling_points_in_robot_m[agent]

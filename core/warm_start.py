@@ -12,6 +12,10 @@ from __future__ import annotations
 import numpy as np
 
 from core.layout import BlockLayout
+from core.mpc_inputs import MpcInputs
+from core.nlp_solver import NlpSolution
+from core.team_model import TeamModel
+from core.transport_problem import TransportProblem
 
 
 def shift_solution(layout: BlockLayout, horizon_steps: int, solution: np.ndarray) -> np.ndarray:
@@ -56,3 +60,34 @@ def conform_forces(
             elif forces[leg, 2] < minimum_stance_force_n:
                 forces[leg] = nominal[leg]
         guess[block] = forces.reshape(-1)
+
+
+def initial_guess(
+    problem: TransportProblem,
+    team: TeamModel,
+    inputs: MpcInputs,
+    previous: NlpSolution | None,
+    agent: int | None,
+) -> np.ndarray:
+    """Shifted previous solution, or a cold guess holding the measured states with nominal
+    forces; GRFs are conformed to the contact schedule either way."""
+    layout = problem.nlp.decision
+    n = problem.horizon_steps
+    g = problem.settings.gravity_m_s2
+    payload_share_kg = team.payload.mass_kg / team.agent_count
+    if previous is not None:
+        guess = shift_solution(layout, n, previous.decision)
+    else:
+        guess = np.zeros(layout.size)
+        for k in range(n + 1):
+            for key, r in zip(problem.robot_keys(), problem.robot_indices(agent), strict=True):
+                layout.put(guess, f"robot_{key}@{k}", inputs.robot_states[r])
+            layout.put(guess, f"payload@{k}", inputs.payload_state)
+            if k < n:
+                for j in range(team.agent_count):
+                    layout.put(guess, f"wrench_{j}@{k}",
+                               np.array([0, 0, payload_share_kg * g, 0, 0, 0]))
+    for key, r in zip(problem.robot_keys(), problem.robot_indices(agent), strict=True):
+        conform_forces(guess, layout, f"grf_{key}", inputs.contacts[r],
+                       team.robots[r].mass_kg + payload_share_kg, g)
+    return guess

@@ -16,10 +16,12 @@ import numpy as np
 
 from core.admm_executor import LocalSolverSpec, SerialExecutor
 from core.admm_mpc import DistributedMpc
-from core.centralized_mpc import CentralizedMpc, initial_guess
+from core.centralized_mpc import CentralizedMpc
 from core.closed_loop import ClosedLoopResult, run_closed_loop
 from core.settings import MpcSettings, SolverSettings
 from core.standard_scenarios import standard_scenario
+from core.transport_problem import build_transport_problem
+from core.warm_start import initial_guess
 from deploy.codegen_cache import CompiledCodeCache
 from deploy.process_executor import ProcessExecutor
 from drivers.robot_descriptions import srb_parameters
@@ -44,7 +46,7 @@ def accuracy_check(team, settings: MpcSettings, inputs_samples: list, cache
     reference = MpcSettings(solver=SolverSettings(name="ipopt-reference"))
     fast = LocalSolverSpec(settings, team.agent_count, cache).build()
     slow = LocalSolverSpec(reference, team.agent_count, cache).build()
-    problem = DistributedMpc(team, settings, executor=_NoExecutor()).problem
+    problem = build_transport_problem(settings, team.agent_count, local=True)
     grf, payload, objective = 0.0, 0.0, 0.0
     layout = problem.nlp.decision
     for inputs in inputs_samples:
@@ -78,16 +80,6 @@ class _SampleRecorder:
             self.samples.append(inputs)
         self.seen += 1
         return self.update(inputs)
-
-
-class _NoExecutor:
-    """Placeholder executor for building a problem layout without solvers."""
-
-    def solve_all(self, requests):
-        raise RuntimeError("not for solving")
-
-    def close(self) -> None:
-        pass
 
 
 @dataclass

@@ -9,10 +9,10 @@ from pathlib import Path
 import numpy as np
 import pytest
 
-from core.centralized_mpc import initial_guess
 from core.nlp_solver import NlpSolver
 from core.settings import MpcSettings, SafetySettings, SolverSettings
 from core.transport_problem import build_transport_problem
+from core.warm_start import initial_guess
 from deploy.codegen_cache import CompiledCodeCache
 from tests.core.controller_fixtures import inputs_at_start, team
 
