@@ -37,6 +37,21 @@ class TrotGait:
     def stance_duration_s(self) -> float:
         return self.duty_factor * self.period_s
 
+    @property
+    def swing_duration_s(self) -> float:
+        return (1.0 - self.duty_factor) * self.period_s
+
+    def swing_progress(self, time_s: float) -> np.ndarray:
+        """(4,) fraction of the swing done at ``time_s`` for swing legs, 0 for stance legs."""
+        phase = np.mod(time_s / self.period_s + TROT_OFFSETS, 1.0)
+        progress = (phase - self.duty_factor) / (1.0 - self.duty_factor)
+        return np.where(phase < self.duty_factor, 0.0, progress)
+
+    def time_to_touchdown_s(self, time_s: float) -> np.ndarray:
+        """(4,) time [s] until each leg's next touchdown (0 for legs in stance)."""
+        phase = np.mod(time_s / self.period_s + TROT_OFFSETS, 1.0)
+        return np.where(phase < self.duty_factor, 0.0, (1.0 - phase) * self.period_s)
+
 
 @dataclass
 class FootholdPlanner:
@@ -89,6 +104,19 @@ class FootholdPlanner:
             target = self._raibert(robot_state, 0.0, reference_state[3:6])
             self.feet_in_world_m[landing] = target[landing]
         self._stance = stance
+
+    def swing_targets(self, time_s: float, robot_state: np.ndarray,
+                      velocity_reference: np.ndarray) -> np.ndarray:
+        """(4, 3) touchdown targets [m] of each leg's next touchdown (Raibert, re-evaluated from
+        the measured trunk ``robot_state`` with each leg's own time to touchdown)."""
+        lead = self.gait.time_to_touchdown_s(time_s)
+        return np.array([self._raibert(robot_state, float(lead[leg]), velocity_reference)[leg]
+                         for leg in range(4)])
+
+    def set_feet(self, feet_in_world_m: np.ndarray, mask: np.ndarray) -> None:
+        """Overwrite the stored positions of the legs in ``mask`` (e.g. with measured
+        touchdown points, so the NMPC's lever arms are the real ones)."""
+        self.feet_in_world_m[mask] = np.asarray(feet_in_world_m)[mask]
 
     def horizon(self, time_s: float, steps: int, sample_period_s: float,
                 robot_state: np.ndarray, reference_states: np.ndarray
