@@ -25,6 +25,12 @@ from drivers.mujoco_scene import RobotIndices, TeamScene
 
 PAYLOAD_NAME = "payload"
 
+_PYRAMIDAL_CONE = int(mujoco.mjtCone.mjCONE_PYRAMIDAL)
+# constraint type -> whether its rows add up to the contact normal force under a pyramidal cone
+_PYRAMID_NORMAL_ROW = np.zeros(len(mujoco.mjtConstraint.__members__), dtype=bool)
+_PYRAMID_NORMAL_ROW[[int(mujoco.mjtConstraint.mjCNSTR_CONTACT_FRICTIONLESS),
+                     int(mujoco.mjtConstraint.mjCNSTR_CONTACT_PYRAMIDAL)]] = True
+
 
 @dataclass
 class _Push:
@@ -61,6 +67,20 @@ class TeamSimulation:
         self._stacked_command = np.zeros((5, len(self._actuator_ids)))
         self._coupling_ids = {r.name: self.model.equality(f"{r.name}/coupling").id
                               for r in scene.robots}
+        # per robot, geom id -> 1 + its foot index (LEG_NAMES order), 0 for any other geom and,
+        # through the extra last entry, for the geom id -1 of flex contacts
+        self._foot_of_geom: dict[str, np.ndarray] = {}
+        for robot in scene.robots:
+            foot_of_geom = np.zeros(self.model.ngeom + 1, dtype=np.intp)
+            foot_of_geom[robot.foot_geom_ids] = np.arange(1, FOOT_COUNT + 1)
+            self._foot_of_geom[robot.name] = foot_of_geom
+        # per robot, one gather from qpos / qvel: base free joint (7 / 6 entries), then legs
+        self._state_addresses = {
+            r.name: (np.concatenate([np.arange(r.base_qpos_address, r.base_qpos_address + 7),
+                                     r.leg_qpos_addresses]),
+                     np.concatenate([np.arange(r.base_qvel_address, r.base_qvel_address + 6),
+                                     r.leg_qvel_addresses]))
+            for r in scene.robots}
 
     @property
     def time_s(self) -> float:
@@ -157,27 +177,50 @@ class TeamSimulation:
     # --- sensors -------------------------------------------------------------------------
     def _measure(self, robot: RobotIndices) -> RobotMeasurement:
         data = self.data
-        b, v = robot.base_qpos_address, robot.base_qvel_address
-        normal_force = np.zeros(FOOT_COUNT)
-        contact_wrench = np.zeros(6)
-        for i in range(data.ncon):
-            geoms = data.contact.geom[i]
-            for foot, geom_id in enumerate(robot.foot_geom_ids):
-                if geom_id in geoms:
-                    mujoco.mj_contactForce(self.model, data, i, contact_wrench)
-                    normal_force[foot] += contact_wrench[0]
+        qpos_addresses, qvel_addresses = self._state_addresses[robot.name]
+        qpos = data.qpos[qpos_addresses]  # fancy indexing: fresh arrays, sliced into views
+        qvel = data.qvel[qvel_addresses]
+        normal_force = self._foot_normal_forces(robot)
         return RobotMeasurement(
-            time_s=self.time_s,
-            position_rad=data.qpos[robot.leg_qpos_addresses].copy(),
-            velocity_rad_s=data.qvel[robot.leg_qvel_addresses].copy(),
-            torque_nm=data.actuator_force[robot.actuator_ids].copy(),
-            position_in_world_m=data.qpos[b:b + 3].copy(),
-            quaternion_wxyz=data.qpos[b + 3:b + 7].copy(),
-            linear_velocity_in_world_m_s=data.qvel[v:v + 3].copy(),
-            angular_velocity_in_body_rad_s=data.qvel[v + 3:v + 6].copy(),
+            time_s=float(data.time),
+            position_rad=qpos[7:],
+            velocity_rad_s=qvel[6:],
+            torque_nm=data.actuator_force[robot.actuator_ids],
+            position_in_world_m=qpos[0:3],
+            quaternion_wxyz=qpos[3:7],
+            linear_velocity_in_world_m_s=qvel[0:3],
+            angular_velocity_in_body_rad_s=qvel[3:6],
             foot_contact=normal_force > 0.0,
             foot_normal_force_n=normal_force,
         )
+
+    def _foot_normal_forces(self, robot: RobotIndices) -> np.ndarray:
+        """Ground normal force [N] on each of ``robot``'s feet, (4,) in ``LEG_NAMES`` order: over
+        the contacts involving the foot's geom (``foot_geom_ids``), the sum of the normal
+        component of ``mj_contactForce``.
+
+        Vectorised, with no call per contact. A contact's normal force is read from
+        ``efc_force``: with a pyramidal cone, the sum of all its rows (the 2 (dim - 1) pyramid
+        edges, MuJoCo's ``mju_decodePyramid``; the one row of a frictionless contact), summed
+        by ``bincount`` over the rows tagged with the contact's id (``efc_id``) in row order;
+        with an elliptic cone, its first row (``efc_address``). A contact without rows
+        (``efc_address`` -1) has none. Feet then sum their contacts in contact order: the
+        same additions in the same order as the per-contact loop, hence the same values.
+        """
+        data = self.data
+        contact = data.contact
+        if self.model.opt.cone == _PYRAMIDAL_CONE:
+            rows = _PYRAMID_NORMAL_ROW[data.efc_type]
+            normals = np.bincount(data.efc_id[rows], weights=data.efc_force[rows],
+                                  minlength=data.ncon)
+        else:
+            addresses = contact.efc_address
+            active = addresses >= 0
+            normals = np.zeros(data.ncon)
+            normals[active] = data.efc_force[addresses[active]]
+        # bin 0 collects the other geoms; each contact counts on both its sides
+        feet = self._foot_of_geom[robot.name][contact.geom].ravel()
+        return np.bincount(feet, weights=normals.repeat(2), minlength=FOOT_COUNT + 1)[1:]
 
     def _mocap_frame(self) -> MocapFrame:
         poses: dict[str, Pose] = {}

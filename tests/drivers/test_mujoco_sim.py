@@ -1,8 +1,9 @@
 """The MuJoCo backend behind the driver interface: standing PD, I/O round trip, conventions,
-coupling wrench, determinism, mocap noise, pushes."""
+foot normal forces, coupling wrench, determinism, mocap noise, pushes."""
 
 from __future__ import annotations
 
+import copy
 import dataclasses
 
 import mujoco
@@ -121,6 +122,73 @@ def test_base_quaternion_is_wxyz_base_to_world(scene, team):
     heading = matrix.reshape(3, 3) @ [1.0, 0.0, 0.0]  # the trunk's forward axis in world
     np.testing.assert_allclose(heading, [np.cos(yaw), np.sin(yaw), 0.0], atol=1e-9)
     np.testing.assert_allclose(simulation.data.xmat[robot.base_body_id], matrix, atol=1e-9)
+
+
+def _reference_foot_normal_forces(simulation: TeamSimulation, robot) -> np.ndarray:
+    """The plain definition: per foot, the sum over the contacts involving its geom of the
+    normal component of ``mj_contactForce``."""
+    data = simulation.data
+    forces_n, wrench = np.zeros(4), np.zeros(6)
+    for i in range(data.ncon):
+        for foot, geom_id in enumerate(robot.foot_geom_ids):
+            if geom_id in data.contact.geom[i]:
+                mujoco.mj_contactForce(simulation.model, data, i, wrench)
+                forces_n[foot] += wrench[0]
+    return forces_n
+
+
+@pytest.mark.parametrize("variant", ["standing", "elliptic cone", "mixed condim", "limp"])
+def test_foot_normal_forces_match_mj_contact_force(scene, variant):
+    model = copy.deepcopy(scene.model)
+    if variant == "elliptic cone":
+        model.opt.cone = mujoco.mjtCone.mjCONE_ELLIPTIC
+    if variant == "mixed condim":  # frictionless, pyramids of 4, 6 and 10 edges
+        model.geom_condim[scene.robots[0].foot_geom_ids] = [1, 3, 4, 6]
+    variant_scene = dataclasses.replace(scene, model=model)
+    # limp: the robots fold onto the ground, trunks and legs touching it besides the feet
+    simulation = (TeamSimulation(variant_scene) if variant == "limp"
+                  else _standing(variant_scene))
+    drivers = [simulation.robot_driver(r.name) for r in scene.robots]
+    touching = np.zeros((len(drivers), 4), dtype=bool)
+    for _ in range(60):
+        simulation.step(5)
+        for robot, driver in zip(scene.robots, drivers, strict=True):
+            measurement = driver.read()
+            reference_n = _reference_foot_normal_forces(simulation, robot)
+            np.testing.assert_allclose(measurement.foot_normal_force_n, reference_n,
+                                       rtol=1e-9, atol=0.0)
+            np.testing.assert_array_equal(measurement.foot_contact, reference_n > 0.0)
+            touching |= measurement.foot_contact
+    assert touching.all()
+    if variant == "limp":  # other geoms reached the ground too
+        assert not np.isin(simulation.data.contact.geom,
+                           [0, *np.concatenate([r.foot_geom_ids for r in scene.robots])]).all()
+
+
+def test_no_contact_no_foot_force(scene):
+    qpos = scene.initial_qpos.copy()
+    for robot in scene.robots:
+        qpos[robot.base_qpos_address + 2] += 1.0
+    qpos[scene.payload_qpos_address + 2] += 1.0
+    simulation = TeamSimulation(dataclasses.replace(scene, initial_qpos=qpos))
+    assert simulation.data.ncon == 0
+    measurement = simulation.robot_driver(scene.robots[0].name).read()
+    np.testing.assert_array_equal(measurement.foot_normal_force_n, np.zeros(4))
+    assert not measurement.foot_contact.any()
+
+
+def test_measurement_arrays_are_snapshots(scene):
+    simulation = _standing(scene)
+    driver = simulation.robot_driver(scene.robots[0].name)
+    before = driver.read()
+    kept = {f.name: np.copy(getattr(before, f.name)) for f in dataclasses.fields(before)}
+    simulation.step(20)
+    after = driver.read()
+    assert not np.array_equal(after.position_in_world_m, before.position_in_world_m)
+    for name, value in kept.items():  # later steps leave an earlier measurement as it was
+        np.testing.assert_array_equal(getattr(before, name), value)
+    assert before.position_rad.shape == (12,) and before.quaternion_wxyz.shape == (4,)
+    assert before.foot_contact.dtype == bool and before.foot_normal_force_n.shape == (4,)
 
 
 def test_static_coupling_forces_carry_the_payload_weight(scene):
