@@ -38,9 +38,9 @@ def _bench_nmpc(args: argparse.Namespace) -> int:
 
 
 def _sim(args: argparse.Namespace) -> int:
-    from deploy.srb_sim import run_srb_sim
+    from deploy.sim_command import run_sim
 
-    return run_srb_sim(args, mpc_settings(args))
+    return run_sim(args, mpc_settings(args))
 
 
 def build_parser() -> argparse.ArgumentParser:
@@ -63,13 +63,20 @@ def build_parser() -> argparse.ArgumentParser:
     nmpc.add_argument("--config", help="YAML file overriding MpcSettings fields")
     nmpc.set_defaults(handler=_bench_nmpc)
 
-    sim = commands.add_parser("sim", help="run a closed-loop scenario")
-    sim.add_argument("--agents", type=int, default=2)
-    sim.add_argument("--mode", default="distributed", choices=["distributed", "centralized"])
-    sim.add_argument("--duration", type=float, default=12.0,
-                     help="simulated seconds (the reference reaches its goal at 10 s)")
+    sim = commands.add_parser("sim", help="run a scenario on the embedded MuJoCo backend")
+    sim.add_argument("scenario", nargs="?", default="two_go2",
+                     help="shipped scenario name or path of a scenario YAML (default two_go2)")
     sim.add_argument("--json", help="write the summary metrics as JSON")
     sim.add_argument("--config", help="YAML file overriding MpcSettings fields")
+    sim.add_argument("--duration", type=float, help="override the scenario's duration_s")
+    sim.add_argument("--seed", type=int, help="override the scenario's seed")
+    sim.add_argument("--mode", choices=["distributed", "centralized", "wrench-only"],
+                     help="override the scenario's controller.mode")
+    sim.add_argument("--serial", action="store_true",
+                     help="run ADMM local solves in this process instead of one per agent")
+    sim.add_argument("--delay", action="store_true",
+                     help="model computation delay (apply each plan after its solve time)")
+    sim.add_argument("--quiet", action="store_true", help="no progress bar")
     sim.set_defaults(handler=_sim)
     return parser
 

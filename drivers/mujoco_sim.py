@@ -146,6 +146,19 @@ class TeamSimulation:
         a = self.scene.payload_qpos_address
         return self.data.qpos[a:a + 3].copy(), self.data.qpos[a + 3:a + 7].copy()
 
+    def base_pose(self, name: str) -> Pose:
+        """Robot ``name``'s base (URDF root link) origin [m] and quaternion wxyz, world frame."""
+        a = self.scene.robot(name).base_qpos_address
+        return self.data.qpos[a:a + 3].copy(), self.data.qpos[a + 3:a + 7].copy()
+
+    def coupling_error_m(self, name: str) -> float:
+        """Distance [m] between robot ``name``'s coupling point on its trunk and the payload's
+        coupling point (the weld's translational violation), from the last step."""
+        robot = self.scene.robot(name)
+        gap = self.data.site_xpos[robot.coupling_site_id] - self.data.site_xpos[
+            robot.coupler_site_id]
+        return float(np.linalg.norm(gap))
+
     def payload_velocity(self) -> tuple[np.ndarray, np.ndarray]:
         """Payload origin linear velocity [m/s] and angular velocity [rad/s], both in world."""
         a = self.scene.payload_qvel_address

@@ -1,0 +1,129 @@
+"""Summary metrics of a simulated run, from the simulator's ground truth (never the estimate).
+
+``RunMetrics`` is fed once per WBC tick (ground truth, tick times) and once per NMPC update
+(plan statistics); ``summary()`` gives the JSON-ready dict documented in README (``porter
+sim`` summary keys). Timing fields (``nmpc_update_ms``, ``wbc_tick_ms``, ``real_time_factor``)
+are wall-clock measurements and differ between runs; every other field is a function of the
+scenario and seed.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass, field
+
+import numpy as np
+
+from core.mpc_plan import MpcPlan
+
+DEADLINE_S = 1.0 / 60.0
+# A robot has fallen when its trunk is below this fraction of its nominal height, or tilted more
+# than MAX_TILT_RAD (roll or pitch).
+FALL_HEIGHT_FRACTION = 0.5
+MAX_TILT_RAD = 0.7
+
+
+@dataclass
+class RunMetrics:
+    """Accumulates a run's metrics; ``pair_names`` label the (body, obstacle) pairs of h."""
+
+    scenario: str
+    goal_m: np.ndarray
+    goal_tolerance_m: float
+    pair_names: list[str]
+    position_error_m: list[float] = field(default_factory=list)
+    yaw_error_rad: list[float] = field(default_factory=list)
+    min_h_by_pair_m: np.ndarray | None = None
+    max_coupling_error_m: float = 0.0
+    fallen: set[str] = field(default_factory=set)
+    update_ms: list[float] = field(default_factory=list)
+    failed_solves: int = 0
+    solve_iterations: list[int] = field(default_factory=list)
+    solve_ms: list[float] = field(default_factory=list)
+    flagged_plans: int = 0
+    payload_residual: list[float] = field(default_factory=list)
+    wrench_residual: list[float] = field(default_factory=list)
+    wbc_tick_ms: list[float] = field(default_factory=list)
+    wbc_failures: int = 0
+    duration_s: float = 0.0
+    wall_s: float = 0.0
+    final_payload_xy_m: np.ndarray | None = None
+
+    def record_ground_truth(self, time_s: float, payload_xy_m: np.ndarray, payload_yaw_rad: float,
+                            desired_xy_m: np.ndarray, desired_yaw_rad: float,
+                            safety_values_m: np.ndarray, coupling_errors_m: np.ndarray) -> None:
+        """One sample: payload pose vs reference, h of every pair (flattened as ``pair_names``),
+        coupling point distances per robot [m]."""
+        self.duration_s = time_s
+        self.position_error_m.append(float(np.linalg.norm(payload_xy_m - desired_xy_m)))
+        yaw_error = payload_yaw_rad - desired_yaw_rad
+        self.yaw_error_rad.append(float(np.arctan2(np.sin(yaw_error), np.cos(yaw_error))))
+        h = np.asarray(safety_values_m, dtype=float).reshape(-1)
+        self.min_h_by_pair_m = h if self.min_h_by_pair_m is None else np.minimum(
+            self.min_h_by_pair_m, h)
+        self.max_coupling_error_m = max(self.max_coupling_error_m,
+                                        float(np.max(coupling_errors_m)))
+        self.final_payload_xy_m = np.asarray(payload_xy_m, dtype=float)
+
+    def record_fall(self, robot: str) -> None:
+        self.fallen.add(robot)
+
+    def record_plan(self, plan: MpcPlan) -> None:
+        self.update_ms.append(1e3 * plan.update_time_s)
+        self.failed_solves += sum(not s.success for s in plan.solves)
+        self.solve_iterations.extend(s.iterations for s in plan.solves)
+        self.solve_ms.extend(1e3 * s.wall_time_s for s in plan.solves)
+        self.flagged_plans += int(not plan.success)
+        if plan.admm_iterations:
+            last = plan.admm_iterations[-1]
+            self.payload_residual.append(float(np.sqrt(np.mean(last.primal_payload_rms ** 2))))
+            self.wrench_residual.append(float(np.sqrt(np.mean(last.primal_wrench_rms ** 2))))
+
+    def record_wbc(self, tick_s: float, success: bool) -> None:
+        self.wbc_tick_ms.append(1e3 * tick_s)
+        self.wbc_failures += int(not success)
+
+    def summary(self) -> dict:
+        """The run's summary (README: ``porter sim`` summary keys)."""
+        updates = np.asarray(self.update_ms) if self.update_ms else np.zeros(1)
+        ticks = np.asarray(self.wbc_tick_ms) if self.wbc_tick_ms else np.zeros(1)
+        by_pair = ({name: float(h) for name, h in zip(self.pair_names, self.min_h_by_pair_m,
+                                                         strict=True)}
+                   if self.min_h_by_pair_m is not None else {})
+        final = self.final_payload_xy_m
+        reached = bool(final is not None and not self.fallen
+                       and np.linalg.norm(final - self.goal_m) <= self.goal_tolerance_m)
+        return {
+            "scenario": self.scenario,
+            "backend": "mujoco",
+            "duration_s": round(self.duration_s, 6),
+            "falls": len(self.fallen),
+            "fallen_robots": sorted(self.fallen),
+            "reached_goal": reached,
+            "final_goal_distance_m": float(np.linalg.norm(final - self.goal_m))
+            if final is not None else None,
+            "min_h_m": min(by_pair.values()) if by_pair else None,
+            "min_h_by_pair_m": by_pair,
+            "rms_payload_position_error_m": _rms(self.position_error_m),
+            "rms_payload_yaw_error_rad": _rms(self.yaw_error_rad),
+            "max_coupling_error_m": self.max_coupling_error_m,
+            "admm_residual_rms": {"payload_state": _rms(self.payload_residual),
+                                  "wrench": _rms(self.wrench_residual)},
+            "nmpc_update_ms": {"median": float(np.median(updates)),
+                               "p95": float(np.percentile(updates, 95)),
+                               "max": float(np.max(updates))},
+            "nmpc_updates": len(self.update_ms),
+            "deadline_misses": int(np.sum(updates > 1e3 * DEADLINE_S)),
+            "failed_solves": self.failed_solves,
+            "nlp_solve_ms_median": float(np.median(self.solve_ms)) if self.solve_ms else None,
+            "nlp_iterations_mean": float(np.mean(self.solve_iterations))
+            if self.solve_iterations else None,
+            "flagged_plans": self.flagged_plans,
+            "wbc_tick_ms": {"median": float(np.median(ticks)),
+                            "p95": float(np.percentile(ticks, 95))},
+            "wbc_failures": self.wbc_failures,
+            "real_time_factor": self.duration_s / self.wall_s if self.wall_s > 0 else None,
+        }
+
+
+def _rms(values: list[float]) -> float | None:
+    return float(np.sqrt(np.mean(np.square(values)))) if values else None

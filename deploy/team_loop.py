@@ -1,0 +1,291 @@
+"""The team in physics: NMPC at 60 Hz, WBC at 500 Hz, MuJoCo at 1 kHz, in lockstep.
+
+Deterministic: simulated time advances only when the loop steps it, so the same scenario and
+seed give the same trajectory whatever the machine's speed (timing metrics aside). The loop
+talks to the robots and the MoCap only through ``drivers.interfaces`` (``RobotDriver``,
+``MocapSource``); ground truth is read from the simulation for the metrics only.
+
+Per WBC tick (2 ms): at every NMPC instant (t >= next multiple of Ts) the NMPC inputs are built
+from *measured* data -- robot poses from MoCap, velocities from the robots' own state
+estimates, the payload state from ``PayloadEstimator`` -- and the controller plans; then each
+robot's WBC tracks the active plan. With ``controller.model_computation_delay`` a new plan
+becomes active only after its measured update time has passed in simulated time (the old one
+is used meanwhile), as on robots.
+"""
+
+from __future__ import annotations
+
+import math
+import time
+from collections.abc import Callable
+from dataclasses import dataclass
+
+import numpy as np
+
+from core.admm_executor import LocalSolverSpec
+from core.admm_mpc import DistributedMpc
+from core.centralized_mpc import CentralizedMpc
+from core.gait import TrotGait
+from core.mpc_inputs import MpcInputs
+from core.mpc_plan import MpcPlan
+from core.payload_estimator import PayloadEstimator
+from core.plan_tracking import LegCoordinator, wbc_target
+from core.reference import horizon_references
+from core.rotations import euler_from_rotation
+from core.settings import MpcSettings, WbcSettings
+from core.team_model import TeamModel
+from core.whole_body_control import FloatingBaseState, WholeBodyController
+from deploy.codegen_cache import CompiledCodeCache
+from deploy.process_executor import ProcessExecutor
+from deploy.scenario import Scenario
+from deploy.sim_metrics import FALL_HEIGHT_FRACTION, MAX_TILT_RAD, RunMetrics
+from drivers.interfaces import JointCommand, MocapFrame, RobotMeasurement
+from drivers.mujoco_scene import build_team_scene
+from drivers.mujoco_sim import PAYLOAD_NAME, TeamSimulation
+from drivers.robot_descriptions import (
+    FOOT_RADIUS_M,
+    load_pinocchio_model,
+    srb_parameters,
+    standing_configuration,
+)
+
+PHYSICS_TIMESTEP_S = 0.001
+WBC_DECIMATION = 2  # physics steps per WBC tick: 500 Hz
+SETTLE_S = 0.3  # standing (all feet down) before the gait starts and the reference moves
+JOINT_DAMPING_STANDING = 0.5
+
+Progress = Callable[[float, float, float], None]  # (sim time, duration, wall time) [s]
+
+
+@dataclass
+class _Robot:
+    name: str
+    driver: object
+    wbc: WholeBodyController
+    legs: LegCoordinator
+
+
+def measurement_state(measurement: RobotMeasurement) -> FloatingBaseState:
+    """The WBC's floating-base state from a robot's own sensors."""
+    return FloatingBaseState(
+        measurement.position_in_world_m, measurement.quaternion_wxyz,
+        measurement.linear_velocity_in_world_m_s, measurement.angular_velocity_in_body_rad_s,
+        measurement.position_rad, measurement.velocity_rad_s)
+
+
+def mocap_state(measurement: RobotMeasurement, frame: MocapFrame, name: str) -> FloatingBaseState:
+    """Pose from the MoCap frame, twist and joints from the robot (as on hardware)."""
+    position, quaternion = frame.poses[name]
+    return FloatingBaseState(position, quaternion, measurement.linear_velocity_in_world_m_s,
+                             measurement.angular_velocity_in_body_rad_s,
+                             measurement.position_rad, measurement.velocity_rad_s)
+
+
+class TeamLoop:
+    """One scenario in MuJoCo: build once with ``TeamLoop(scenario)``, then ``run()``."""
+
+    def __init__(self, scenario: Scenario, cache: CompiledCodeCache | None = None,
+                 base_settings: MpcSettings | None = None,
+                 wbc_settings: WbcSettings | None = None) -> None:
+        self.scenario = scenario
+        self.settings = scenario.mpc_settings(base_settings or MpcSettings())
+        team_settings = scenario.team_settings()
+        self.team = TeamModel.from_settings(team_settings, srb_parameters)
+        self.reference = scenario.reference.to_reference()
+        self.obstacles = [o.to_obstacle() for o in scenario.obstacles]
+        scene = build_team_scene(
+            team_settings, payload_true_mass_kg=scenario.true_payload_mass_kg,
+            obstacles=[(*o.position_m, o.radius_m, o.height_m) for o in scenario.obstacles],
+            timestep_s=PHYSICS_TIMESTEP_S, payload_height_m=scenario.reference.payload_height_m)
+        noise = scenario.disturbances
+        self.simulation = TeamSimulation(scene, seed=scenario.seed,
+                                         mocap_position_noise_m=noise.mocap_position_noise_m,
+                                         mocap_angle_noise_rad=noise.mocap_angle_noise_rad)
+        self.mocap = self.simulation.mocap()
+        gait = TrotGait(scenario.gait.period_s, scenario.gait.duty_factor)
+        self.robots: list[_Robot] = []
+        for agent, parameters in zip(team_settings.agents, self.team.robots, strict=True):
+            model = load_pinocchio_model(agent.robot_type)
+            wbc = WholeBodyController(model, standing_configuration(agent.robot_type, model),
+                                      np.asarray(agent.coupling_point_in_robot_m),
+                                      FOOT_RADIUS_M[agent.robot_type], wbc_settings)
+            legs = LegCoordinator(parameters, gait, scenario.gait.swing_height_m)
+            self.robots.append(_Robot(agent.name, self.simulation.robot_driver(agent.name),
+                                      wbc, legs))
+        self.estimator = PayloadEstimator(self.team)
+        cache = cache or CompiledCodeCache()
+        self.controller: CentralizedMpc | DistributedMpc
+        if scenario.controller.mode == "centralized":
+            self.controller = CentralizedMpc(self.team, self.settings, compiler=cache)
+        else:
+            spec = LocalSolverSpec(self.settings, self.team.agent_count, cache)
+            executor = ProcessExecutor(spec) if scenario.controller.executor == "process" else None
+            self.controller = DistributedMpc(self.team, self.settings, executor=executor,
+                                             compiler=cache)
+        self.metrics = RunMetrics(scenario.name, self.reference.goal_m(),
+                                  scenario.goal_tolerance_m, self._pair_names())
+        self._payload_estimate: np.ndarray | None = None
+
+    def _pair_names(self) -> list[str]:
+        bodies = [PAYLOAD_NAME] + [r.name for r in self.robots]
+        return [f"{body}|obstacle_{j}" for body in bodies for j in range(len(self.obstacles))]
+
+    def close(self) -> None:
+        if isinstance(self.controller, DistributedMpc):
+            self.controller.close()
+
+    # --- the loop ------------------------------------------------------------------------
+    def run(self, progress: Progress | None = None) -> dict:
+        """Simulate the scenario to its end (or a fall); returns the summary dict."""
+        sim = self.simulation
+        ts = self.settings.sample_period_s
+        tick_s = WBC_DECIMATION * PHYSICS_TIMESTEP_S
+        total_ticks = int(round(self.scenario.duration_s / tick_s))
+        pushes = sorted(self.scenario.disturbances.pushes, key=lambda p: p.time_s)
+        delay = self.scenario.controller.model_computation_delay
+        measurements = [r.driver.read() for r in self.robots]  # type: ignore[attr-defined]
+        for robot, measurement in zip(self.robots, measurements, strict=True):
+            state = measurement_state(measurement)
+            robot.legs.reset(robot.wbc.srb_state(state), robot.wbc.foot_positions(state))
+        plan: MpcPlan | None = None
+        pending: tuple[float, MpcPlan] | None = None
+        plan_start_s = 0.0
+        next_update = 0
+        start = time.perf_counter()
+        for tick in range(total_ticks):
+            t = sim.time_s
+            while pushes and pushes[0].time_s <= t + 1e-9:
+                push = pushes.pop(0)
+                sim.apply_push(push.target, np.asarray(push.force_n), push.duration_s)
+            measurements = [r.driver.read() for r in self.robots]  # type: ignore[attr-defined]
+            if t >= next_update * ts - 1e-9:
+                new_plan = self._nmpc_update(t, measurements)
+                next_update += 1
+                if delay and plan is not None:
+                    pending = (t + new_plan.update_time_s, new_plan)
+                else:
+                    plan, plan_start_s = new_plan, t
+            if pending is not None and t >= pending[0]:
+                plan, plan_start_s = pending[1], pending[0] - pending[1].update_time_s
+                pending = None
+            assert plan is not None
+            self._wbc_tick(t, plan, plan_start_s, measurements)
+            sim.step(WBC_DECIMATION)
+            if self._record_ground_truth(sim.time_s):
+                break
+            if progress is not None and (tick + 1) % 50 == 0:
+                progress(sim.time_s, self.scenario.duration_s, time.perf_counter() - start)
+        self.metrics.wall_s = time.perf_counter() - start
+        return self.metrics.summary()
+
+    def _gait_time(self, t: float) -> float | None:
+        """Gait clock: None while settling (all feet down), then time since the gait started."""
+        return None if t < SETTLE_S else t - SETTLE_S
+
+    def _reference_time(self, t: float) -> float:
+        return max(t - SETTLE_S, 0.0)
+
+    def _nmpc_update(self, t: float, measurements: list[RobotMeasurement]) -> MpcPlan:
+        settings = self.settings
+        n, ts = settings.horizon_steps, settings.sample_period_s
+        frame = self.mocap.latest()
+        assert frame is not None
+        robot_states = np.array([
+            robot.wbc.srb_state(mocap_state(m, frame, robot.name))
+            for robot, m in zip(self.robots, measurements, strict=True)])
+        payload = self.estimator.estimate(robot_states, self._payload_estimate)
+        self._payload_estimate = payload
+        t_ref = self._reference_time(t)
+        robot_refs, payload_ref = horizon_references(self.team, self.reference, t_ref, n, ts)
+        if t < SETTLE_S:  # hold the start pose while settling
+            robot_refs[:, :, 3:6] = 0.0
+            payload_ref[:, 3:6] = 0.0
+        feet, contacts = [], []
+        gait_time = self._gait_time(t)
+        for i, robot in enumerate(self.robots):
+            if gait_time is None:
+                feet.append(np.repeat(robot.legs.planner.feet_in_world_m[None], n, axis=0))
+                contacts.append(np.ones((n, 4)))
+            else:
+                f, c = robot.legs.planner.horizon(gait_time, n, ts, robot_states[i],
+                                                  robot_refs[i])
+                feet.append(f)
+                contacts.append(c)
+        d_safe = settings.safety.safety_distance_m
+        obstacle_rows = np.array([o.row(t, d_safe) for o in self.obstacles]).reshape(-1, 5)
+        inputs = MpcInputs(robot_states, payload, robot_refs, payload_ref, np.array(feet),
+                           np.array(contacts), obstacle_rows)
+        plan = self.controller.update(inputs)
+        self.metrics.record_plan(plan)
+        return plan
+
+    def _wbc_tick(self, t: float, plan: MpcPlan, plan_start_s: float,
+                  measurements: list[RobotMeasurement]) -> None:
+        ts = self.settings.sample_period_s
+        gait_time = self._gait_time(t)
+        t_ref = self._reference_time(t)
+        for i, (robot, measurement) in enumerate(zip(self.robots, measurements, strict=True)):
+            state = measurement_state(measurement)
+            srb = robot.wbc.srb_state(state)
+            feet_now = robot.wbc.foot_positions(state)
+            reference = self.reference.payload_state(t_ref)
+            if gait_time is None:
+                stance = np.ones(4)
+                feet = (robot.legs.planner.feet_in_world_m.copy(), np.zeros((4, 3)),
+                        np.zeros((4, 3)))
+            else:
+                stance = robot.legs.advance(gait_time, srb, reference, feet_now)
+                feet = robot.legs.swing_targets(gait_time, srb, reference[3:6])
+            target = wbc_target(plan, i, t - plan_start_s, ts, stance, feet)
+            output = robot.wbc.compute(state, target)
+            self.metrics.record_wbc(output.solve_time_s, output.success)
+            qdd_velocity = measurement.velocity_rad_s + output.joint_acceleration_rad_s2 * (
+                WBC_DECIMATION * PHYSICS_TIMESTEP_S)
+            robot.driver.send(JointCommand(  # type: ignore[attr-defined]
+                torque_nm=output.torque_nm, velocity_rad_s=qdd_velocity,
+                kd=np.full(12, robot.wbc.settings.joint_damping_nm_s)))
+
+    def _record_ground_truth(self, t: float) -> bool:
+        """Metrics from ground truth; True when a robot has fallen (the run stops)."""
+        sim = self.simulation
+        position, quaternion = sim.payload_pose()
+        rotation = _rotation_wxyz(quaternion)
+        yaw = float(euler_from_rotation(rotation)[2])
+        desired = self.reference.payload_state(self._reference_time(t))
+        bodies = [position[0:2]]
+        fallen = False
+        for robot in self.robots:
+            base_position, base_quaternion = sim.base_pose(robot.name)
+            state = robot.wbc.srb_state(FloatingBaseState(
+                base_position, base_quaternion, np.zeros(3), np.zeros(3), np.zeros(12),
+                np.zeros(12)))
+            bodies.append(state[0:2])
+            nominal = robot.legs.robot.nominal_height_m
+            if state[2] < FALL_HEIGHT_FRACTION * nominal or max(abs(state[6]), abs(state[7])) \
+                    > MAX_TILT_RAD:
+                self.metrics.record_fall(robot.name)
+                fallen = True
+        h = np.array([[np.linalg.norm(body - o.row(t, 0.0)[0:2]) - self.settings.safety
+                       .safety_distance_m - o.radius_m for o in self.obstacles]
+                      for body in bodies])
+        coupling = np.array([sim.coupling_error_m(robot.name) for robot in self.robots])
+        self.metrics.record_ground_truth(t, position[0:2], yaw, desired[0:2], desired[8], h,
+                                         coupling)
+        return fallen
+
+
+def _rotation_wxyz(quaternion: np.ndarray) -> np.ndarray:
+    w, x, y, z = quaternion / np.linalg.norm(quaternion)
+    return np.array([
+        [1 - 2 * (y * y + z * z), 2 * (x * y - w * z), 2 * (x * z + w * y)],
+        [2 * (x * y + w * z), 1 - 2 * (x * x + z * z), 2 * (y * z - w * x)],
+        [2 * (x * z - w * y), 2 * (y * z + w * x), 1 - 2 * (x * x + y * y)],
+    ])
+
+
+def summary_line(time_s: float, duration_s: float, wall_s: float) -> str:
+    """A one-line progress bar: simulated time and real-time factor."""
+    width = 30
+    done = int(width * min(time_s / duration_s, 1.0)) if duration_s > 0 else width
+    factor = time_s / wall_s if wall_s > 0 else math.inf
+    return f"[{'#' * done}{'.' * (width - done)}] {time_s:5.1f}/{duration_s:.1f} s  RTF {factor:.2f}"
