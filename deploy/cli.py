@@ -37,6 +37,25 @@ def _bench_nmpc(args: argparse.Namespace) -> int:
     return 0
 
 
+def _bench_sim(args: argparse.Namespace) -> int:
+    from deploy.bench_sim import bench_scenario, format_table, write_json
+    from deploy.codegen_cache import CompiledCodeCache
+    from deploy.scenario import shipped_scenarios
+
+    names = args.scenarios or shipped_scenarios()
+    print(f"porter bench sim: {', '.join(names)}; {args.duration} s each, "
+          f"{args.executor} ADMM executor")
+    cache = CompiledCodeCache()
+    settings = mpc_settings(args)
+    rows = [bench_scenario(name, args.duration, args.executor, settings, cache)
+            for name in names]
+    print(format_table(rows))
+    if args.json:
+        write_json(rows, Path(args.json))
+        print(f"wrote {args.json}")
+    return 0
+
+
 def _sim(args: argparse.Namespace) -> int:
     from deploy.sim_command import run_sim
 
@@ -62,6 +81,15 @@ def build_parser() -> argparse.ArgumentParser:
     nmpc.add_argument("--json", help="also write the figures as JSON {rows: [...]}")
     nmpc.add_argument("--config", help="YAML file overriding MpcSettings fields")
     nmpc.set_defaults(handler=_bench_nmpc)
+
+    bench_sim = bench_kinds.add_parser("sim", help="real-time factor and loop times in MuJoCo")
+    bench_sim.add_argument("scenarios", nargs="*", help="scenario names (default: all shipped)")
+    bench_sim.add_argument("--duration", type=float, default=5.0,
+                           help="simulated seconds per scenario")
+    bench_sim.add_argument("--executor", default="process", choices=["process", "serial"])
+    bench_sim.add_argument("--json", help="also write the rows as JSON {rows: [...]}")
+    bench_sim.add_argument("--config", help="YAML file overriding MpcSettings fields")
+    bench_sim.set_defaults(handler=_bench_sim)
 
     sim = commands.add_parser("sim", help="run a scenario on the embedded MuJoCo backend")
     sim.add_argument("scenario", nargs="?", default="two_go2",

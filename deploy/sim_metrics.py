@@ -43,6 +43,9 @@ class RunMetrics:
     payload_residual: list[float] = field(default_factory=list)
     wrench_residual: list[float] = field(default_factory=list)
     wbc_tick_ms: list[float] = field(default_factory=list)
+    estimate_position_error_m: list[float] = field(default_factory=list)
+    estimate_tilt_error_rad: list[float] = field(default_factory=list)
+    estimate_yaw_error_rad: list[float] = field(default_factory=list)
     wbc_failures: int = 0
     duration_s: float = 0.0
     wall_s: float = 0.0
@@ -77,6 +80,14 @@ class RunMetrics:
             last = plan.admm_iterations[-1]
             self.payload_residual.append(float(np.sqrt(np.mean(last.primal_payload_rms ** 2))))
             self.wrench_residual.append(float(np.sqrt(np.mean(last.primal_wrench_rms ** 2))))
+
+    def record_estimate(self, estimate: np.ndarray, position_m: np.ndarray,
+                        euler_rad: np.ndarray) -> None:
+        """Payload estimate (12,) vs the true payload position and XYZ Euler angles."""
+        self.estimate_position_error_m.append(float(np.linalg.norm(estimate[0:3] - position_m)))
+        self.estimate_tilt_error_rad.append(float(np.max(np.abs(estimate[6:8] - euler_rad[0:2]))))
+        yaw = estimate[8] - euler_rad[2]
+        self.estimate_yaw_error_rad.append(float(abs(np.arctan2(np.sin(yaw), np.cos(yaw)))))
 
     def record_wbc(self, tick_s: float, success: bool) -> None:
         self.wbc_tick_ms.append(1e3 * tick_s)
@@ -121,7 +132,14 @@ class RunMetrics:
             "wbc_tick_ms": {"median": float(np.median(ticks)),
                             "p95": float(np.percentile(ticks, 95))},
             "wbc_failures": self.wbc_failures,
+            "payload_estimate_error": {
+                "position_rms_m": _rms(self.estimate_position_error_m),
+                "tilt_max_rad": max(self.estimate_tilt_error_rad, default=None),
+                "yaw_rms_rad": _rms(self.estimate_yaw_error_rad)},
             "real_time_factor": self.duration_s / self.wall_s if self.wall_s > 0 else None,
+            "wall_s": self.wall_s,
+            "nmpc_wall_s": float(np.sum(self.update_ms)) / 1e3,
+            "wbc_wall_s": float(np.sum(self.wbc_tick_ms)) / 1e3,
         }
 
 

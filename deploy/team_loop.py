@@ -195,6 +195,9 @@ class TeamLoop:
             for robot, m in zip(self.robots, measurements, strict=True)])
         payload = self.estimator.estimate(robot_states, self._payload_estimate)
         self._payload_estimate = payload
+        true_position, true_quaternion = self.simulation.payload_pose()
+        self.metrics.record_estimate(payload, true_position,
+                                     euler_from_rotation(_rotation_wxyz(true_quaternion)))
         t_ref = self._reference_time(t)
         robot_refs, payload_ref = horizon_references(self.team, self.reference, t_ref, n, ts)
         if t < SETTLE_S:  # hold the start pose while settling

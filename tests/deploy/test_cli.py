@@ -47,3 +47,58 @@ def test_bad_config_file_is_a_clear_error(tmp_path: Path, capsys: pytest.Capture
                  "--config", str(config)])
     assert code == 2
     assert "admm.iterations" in capsys.readouterr().err
+
+
+SUMMARY_KEYS = {"scenario", "duration_s", "falls", "reached_goal", "min_h_m",
+                "rms_payload_position_error_m", "rms_payload_yaw_error_rad",
+                "max_coupling_error_m", "admm_residual_rms", "nmpc_update_ms",
+                "deadline_misses", "wbc_tick_ms", "real_time_factor"}
+
+
+def test_sim_runs_the_default_scenario_on_mujoco(tmp_path: Path,
+                                                 capsys: pytest.CaptureFixture) -> None:
+    out = tmp_path / "summary.json"
+    code = main(["sim", "--duration", "0.5", "--serial", "--json", str(out)])
+    assert code == 0
+    captured = capsys.readouterr()
+    assert "RTF" in captured.err  # the progress bar
+    summary = json.loads(out.read_text())
+    assert SUMMARY_KEYS <= set(summary)
+    assert summary["scenario"] == "two_go2" and summary["backend"] == "mujoco"
+    assert summary["duration_s"] == pytest.approx(0.5)
+    assert summary["falls"] == 0
+    assert set(summary["admm_residual_rms"]) == {"payload_state", "wrench"}
+    assert set(summary["nmpc_update_ms"]) == {"median", "p95", "max"}
+    assert set(summary["wbc_tick_ms"]) == {"median", "p95"}
+    assert summary["nmpc_update_ms"]["median"] > 0 and summary["wbc_tick_ms"]["median"] > 0
+    assert json.loads(captured.out) == summary
+
+
+def test_sim_rejects_a_bad_scenario_file_naming_the_field(
+        tmp_path: Path, capsys: pytest.CaptureFixture) -> None:
+    scenario = tmp_path / "bad.yaml"
+    from deploy.scenario import scenario_path
+
+    scenario.write_text(scenario_path("two_go2").read_text().replace(
+        "mass_kg: 5.0", "mass_kg: -5.0"))
+    assert main(["sim", str(scenario)]) == 2
+    assert "payload.mass_kg" in capsys.readouterr().err
+
+
+def test_sim_rejects_an_unknown_scenario_listing_the_shipped_ones(
+        capsys: pytest.CaptureFixture) -> None:
+    assert main(["sim", "no_such_scenario"]) == 2
+    assert "two_go2" in capsys.readouterr().err
+
+
+def test_bench_sim_prints_the_table_and_json(tmp_path: Path,
+                                             capsys: pytest.CaptureFixture) -> None:
+    out = tmp_path / "bench_sim.json"
+    code = main(["bench", "sim", "two_go2", "--duration", "0.3", "--executor", "serial",
+                 "--json", str(out)])
+    assert code == 0
+    printed = capsys.readouterr().out
+    assert "RTF" in printed and "two_go2" in printed
+    (row,) = json.loads(out.read_text())["rows"]
+    assert row["real_time_factor"] > 0 and row["nmpc_wall_s"] > 0 and row["wbc_wall_s"] > 0
+    assert row["nmpc_wall_s"] + row["wbc_wall_s"] < row["wall_s"]
