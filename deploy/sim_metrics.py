@@ -44,6 +44,8 @@ class RunMetrics:
     wrench_residual: list[float] = field(default_factory=list)
     wbc_tick_ms: list[float] = field(default_factory=list)
     estimate_position_error_m: list[float] = field(default_factory=list)
+    wrench_force_error_n: list[float] = field(default_factory=list)
+    wrench_force_n: list[float] = field(default_factory=list)
     estimate_tilt_error_rad: list[float] = field(default_factory=list)
     estimate_yaw_error_rad: list[float] = field(default_factory=list)
     wbc_failures: int = 0
@@ -89,6 +91,13 @@ class RunMetrics:
         yaw = estimate[8] - euler_rad[2]
         self.estimate_yaw_error_rad.append(float(abs(np.arctan2(np.sin(yaw), np.cos(yaw)))))
 
+    def record_wrench(self, predicted_force_n: np.ndarray, measured_force_n: np.ndarray) -> None:
+        """One robot's planned first-stage coupling force on the payload vs the force the
+        simulated coupling transmitted [N], world frame."""
+        self.wrench_force_error_n.append(float(np.linalg.norm(predicted_force_n
+                                                              - measured_force_n)))
+        self.wrench_force_n.append(float(np.linalg.norm(measured_force_n)))
+
     def record_wbc(self, tick_s: float, success: bool) -> None:
         self.wbc_tick_ms.append(1e3 * tick_s)
         self.wbc_failures += int(not success)
@@ -132,6 +141,9 @@ class RunMetrics:
             "wbc_tick_ms": {"median": float(np.median(ticks)),
                             "p95": float(np.percentile(ticks, 95))},
             "wbc_failures": self.wbc_failures,
+            "coupling_force_rms_n": {"measured": _rms(self.wrench_force_n),
+                                      "predicted_minus_measured": _rms(
+                                          self.wrench_force_error_n)},
             "payload_estimate_error": {
                 "position_rms_m": _rms(self.estimate_position_error_m),
                 "tilt_max_rad": max(self.estimate_tilt_error_rad, default=None),

@@ -39,7 +39,7 @@ from deploy.codegen_cache import CompiledCodeCache
 from deploy.process_executor import ProcessExecutor
 from deploy.scenario import Scenario
 from deploy.sim_metrics import FALL_HEIGHT_FRACTION, MAX_TILT_RAD, RunMetrics
-from drivers.interfaces import JointCommand, MocapFrame, RobotMeasurement
+from drivers.interfaces import JointCommand, MocapFrame, RobotDriver, RobotMeasurement
 from drivers.mujoco_scene import build_team_scene
 from drivers.mujoco_sim import PAYLOAD_NAME, TeamSimulation
 from drivers.robot_descriptions import (
@@ -60,7 +60,7 @@ Progress = Callable[[float, float, float], None]  # (sim time, duration, wall ti
 @dataclass
 class _Robot:
     name: str
-    driver: object
+    driver: RobotDriver
     wbc: WholeBodyController
     legs: LegCoordinator
 
@@ -143,7 +143,7 @@ class TeamLoop:
         total_ticks = int(round(self.scenario.duration_s / tick_s))
         pushes = sorted(self.scenario.disturbances.pushes, key=lambda p: p.time_s)
         delay = self.scenario.controller.model_computation_delay
-        measurements = [r.driver.read() for r in self.robots]  # type: ignore[attr-defined]
+        measurements = [r.driver.read() for r in self.robots]
         for robot, measurement in zip(self.robots, measurements, strict=True):
             state = measurement_state(measurement)
             robot.legs.reset(robot.wbc.srb_state(state), robot.wbc.foot_positions(state))
@@ -157,7 +157,7 @@ class TeamLoop:
             while pushes and pushes[0].time_s <= t + 1e-9:
                 push = pushes.pop(0)
                 sim.apply_push(push.target, np.asarray(push.force_n), push.duration_s)
-            measurements = [r.driver.read() for r in self.robots]  # type: ignore[attr-defined]
+            measurements = [r.driver.read() for r in self.robots]
             if t >= next_update * ts - 1e-9:
                 new_plan = self._nmpc_update(t, measurements)
                 next_update += 1
@@ -171,6 +171,10 @@ class TeamLoop:
             assert plan is not None
             self._wbc_tick(t, plan, plan_start_s, measurements)
             sim.step(WBC_DECIMATION)
+            if plan_start_s == t:  # the new plan's first step: its wrench vs the coupling's
+                for i, robot in enumerate(self.robots):
+                    self.metrics.record_wrench(plan.wrench[i, 0:3],
+                                               sim.coupling_wrench(robot.name)[0])
             if self._record_ground_truth(sim.time_s):
                 break
             if progress is not None and (tick + 1) % 50 == 0:
@@ -244,7 +248,7 @@ class TeamLoop:
             self.metrics.record_wbc(output.solve_time_s, output.success)
             qdd_velocity = measurement.velocity_rad_s + output.joint_acceleration_rad_s2 * (
                 WBC_DECIMATION * PHYSICS_TIMESTEP_S)
-            robot.driver.send(JointCommand(  # type: ignore[attr-defined]
+            robot.driver.send(JointCommand(
                 torque_nm=output.torque_nm, velocity_rad_s=qdd_velocity,
                 kd=np.full(12, robot.wbc.settings.joint_damping_nm_s)))
 

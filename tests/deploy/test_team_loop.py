@@ -52,6 +52,10 @@ def test_estimator_tracks_ground_truth_while_trotting() -> None:
     assert error["position_rms_m"] < 0.006
     assert error["tilt_max_rad"] < 0.03
     assert error["yaw_rms_rad"] < 0.01
+    # each coupling carries about half the 5 kg payload's weight; the plan predicts it
+    force = summary["coupling_force_rms_n"]
+    assert 0.8 * 24.5 < force["measured"] < 1.25 * 24.5
+    assert force["predicted_minus_measured"] < 8.0
 
 
 def test_computation_delay_mode_runs_and_still_stands() -> None:
