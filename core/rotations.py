@@ -32,3 +32,13 @@ def euler_from_rotation(rotation: np.ndarray) -> np.ndarray:
 def yaw_rotation(yaw_rad: float) -> np.ndarray:
     """Rz(yaw): rotation about the world z-axis."""
     return rotation_from_euler(np.array([0.0, 0.0, yaw_rad]))
+
+
+def rotation_from_quaternion_wxyz(quaternion: np.ndarray) -> np.ndarray:
+    """Rotation matrix of a (w, x, y, z) quaternion (normalised first)."""
+    w, x, y, z = np.asarray(quaternion, dtype=float) / np.linalg.norm(quaternion)
+    return np.array([
+        [1 - 2 * (y * y + z * z), 2 * (x * y - w * z), 2 * (x * z + w * y)],
+        [2 * (x * y + w * z), 1 - 2 * (x * x + z * z), 2 * (y * z - w * x)],
+        [2 * (x * z - w * y), 2 * (y * z + w * x), 1 - 2 * (x * x + y * y)],
+    ])

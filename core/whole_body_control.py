@@ -29,7 +29,11 @@ import daqp
 import numpy as np
 import pinocchio as pin
 
-from core.rotations import euler_from_rotation, rotation_from_euler
+from core.rotations import (
+    euler_from_rotation,
+    rotation_from_euler,
+    rotation_from_quaternion_wxyz,
+)
 from core.settings import WbcSettings
 from core.srb_model import LEG_NAMES
 
@@ -55,8 +59,7 @@ class FloatingBaseState:
     joint_velocity_rad_s: np.ndarray
 
     def rotation(self) -> np.ndarray:
-        w, x, y, z = self.quaternion_wxyz
-        return pin.Quaternion(w, x, y, z).normalized().toRotationMatrix()
+        return rotation_from_quaternion_wxyz(self.quaternion_wxyz)
 
 
 @dataclass(frozen=True)

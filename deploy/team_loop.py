@@ -31,7 +31,7 @@ from core.mpc_plan import MpcPlan
 from core.payload_estimator import PayloadEstimator
 from core.plan_tracking import LegCoordinator, wbc_target
 from core.reference import horizon_references
-from core.rotations import euler_from_rotation
+from core.rotations import euler_from_rotation, rotation_from_quaternion_wxyz
 from core.settings import MpcSettings, WbcSettings
 from core.team_model import TeamModel
 from core.whole_body_control import FloatingBaseState, WholeBodyController
@@ -201,7 +201,7 @@ class TeamLoop:
         self._payload_estimate = payload
         true_position, true_quaternion = self.simulation.payload_pose()
         self.metrics.record_estimate(payload, true_position,
-                                     euler_from_rotation(_rotation_wxyz(true_quaternion)))
+                                     euler_from_rotation(rotation_from_quaternion_wxyz(true_quaternion)))
         t_ref = self._reference_time(t)
         robot_refs, payload_ref = horizon_references(self.team, self.reference, t_ref, n, ts)
         if t < SETTLE_S:  # hold the start pose while settling
@@ -231,11 +231,11 @@ class TeamLoop:
         ts = self.settings.sample_period_s
         gait_time = self._gait_time(t)
         t_ref = self._reference_time(t)
+        reference = self.reference.payload_state(t_ref)
         for i, (robot, measurement) in enumerate(zip(self.robots, measurements, strict=True)):
             state = measurement_state(measurement)
             srb = robot.wbc.srb_state(state)
             feet_now = robot.wbc.foot_positions(state)
-            reference = self.reference.payload_state(t_ref)
             if gait_time is None:
                 stance = np.ones(4)
                 feet = (robot.legs.planner.feet_in_world_m.copy(), np.zeros((4, 3)),
@@ -256,7 +256,7 @@ class TeamLoop:
         """Metrics from ground truth; True when a robot has fallen (the run stops)."""
         sim = self.simulation
         position, quaternion = sim.payload_pose()
-        rotation = _rotation_wxyz(quaternion)
+        rotation = rotation_from_quaternion_wxyz(quaternion)
         yaw = float(euler_from_rotation(rotation)[2])
         desired = self.reference.payload_state(self._reference_time(t))
         bodies = [position[0:2]]
@@ -279,15 +279,6 @@ class TeamLoop:
         self.metrics.record_ground_truth(t, position[0:2], yaw, desired[0:2], desired[8], h,
                                          coupling)
         return fallen
-
-
-def _rotation_wxyz(quaternion: np.ndarray) -> np.ndarray:
-    w, x, y, z = quaternion / np.linalg.norm(quaternion)
-    return np.array([
-        [1 - 2 * (y * y + z * z), 2 * (x * y - w * z), 2 * (x * z + w * y)],
-        [2 * (x * y + w * z), 1 - 2 * (x * x + z * z), 2 * (y * z - w * x)],
-        [2 * (x * z - w * y), 2 * (y * z + w * x), 1 - 2 * (x * x + y * y)],
-    ])
 
 
 def summary_line(time_s: float, duration_s: float, wall_s: float) -> str:
