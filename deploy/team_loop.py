@@ -52,7 +52,6 @@ from drivers.robot_descriptions import (
 PHYSICS_TIMESTEP_S = 0.001
 WBC_DECIMATION = 2  # physics steps per WBC tick: 500 Hz
 SETTLE_S = 0.3  # standing (all feet down) before the gait starts and the reference moves
-JOINT_DAMPING_STANDING = 0.5
 
 Progress = Callable[[float, float, float], None]  # (sim time, duration, wall time) [s]
 
@@ -92,7 +91,7 @@ class TeamLoop:
         team_settings = scenario.team_settings()
         self.team = TeamModel.from_settings(team_settings, srb_parameters)
         self.reference = scenario.reference.to_reference()
-        self.obstacles = [o.to_obstacle() for o in scenario.obstacles]
+        self.obstacles = scenario.core_obstacles()
         scene = build_team_scene(
             team_settings, payload_true_mass_kg=scenario.true_payload_mass_kg,
             obstacles=[(*o.position_m, o.radius_m, o.height_m) for o in scenario.obstacles],
@@ -158,20 +157,21 @@ class TeamLoop:
                 push = pushes.pop(0)
                 sim.apply_push(push.target, np.asarray(push.force_n), push.duration_s)
             measurements = [r.driver.read() for r in self.robots]
+            applied = False  # a new plan takes effect this tick
             if t >= next_update * ts - 1e-9:
                 new_plan = self._nmpc_update(t, measurements)
                 next_update += 1
                 if delay and plan is not None:
                     pending = (t + new_plan.update_time_s, new_plan)
                 else:
-                    plan, plan_start_s = new_plan, t
+                    plan, plan_start_s, applied = new_plan, t, True
             if pending is not None and t >= pending[0]:
                 plan, plan_start_s = pending[1], pending[0] - pending[1].update_time_s
-                pending = None
+                pending, applied = None, True
             assert plan is not None
             self._wbc_tick(t, plan, plan_start_s, measurements)
             sim.step(WBC_DECIMATION)
-            if plan_start_s == t:  # the new plan's first step: its wrench vs the coupling's
+            if applied:  # the new plan's first step: its planned wrench vs the coupling's
                 for i, robot in enumerate(self.robots):
                     self.metrics.record_wrench(plan.wrench[i, 0:3],
                                                sim.coupling_wrench(robot.name)[0])
