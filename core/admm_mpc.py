@@ -26,7 +26,7 @@ from core.settings import MpcSettings
 from core.srb_model import STATE_SIZE, WRENCH_SIZE
 from core.team_model import TeamModel
 from core.transport_problem import build_transport_problem
-from core.warm_start import initial_guess
+from core.warm_start import ControllerMemory, initial_guess
 
 
 class DistributedMpc:
@@ -56,6 +56,21 @@ class DistributedMpc:
 
     def close(self) -> None:
         self.executor.close()
+
+    def memory(self) -> ControllerMemory:
+        """The warm start the next ``update`` will use (references, not copies)."""
+        return ControllerMemory(list(self._previous), self._consensus,
+                                None if self._consensus is None else self._duals)
+
+    def restore(self, memory: ControllerMemory) -> None:
+        """Continue from ``memory`` (e.g. a logged keyframe): the next update uses it."""
+        if len(memory.previous) != self.team.agent_count:
+            raise ValueError(f"memory has {len(memory.previous)} agents, the controller "
+                             f"{self.team.agent_count}")
+        self._previous = list(memory.previous)
+        self._consensus = memory.consensus
+        self._duals = (np.zeros((self.team.agent_count, self.weights.size))
+                       if memory.duals is None else np.array(memory.duals))
 
     def update(self, inputs: MpcInputs, iterations: int | None = None) -> MpcPlan:
         start = time.perf_counter()

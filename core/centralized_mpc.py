@@ -12,7 +12,7 @@ from core.nlp_solver import NlpCompiler, NlpSolution, NlpSolver
 from core.settings import MpcSettings
 from core.team_model import TeamModel
 from core.transport_problem import build_transport_problem
-from core.warm_start import initial_guess
+from core.warm_start import ControllerMemory, initial_guess
 
 
 class CentralizedMpc:
@@ -35,6 +35,14 @@ class CentralizedMpc:
 
     def reset(self) -> None:
         self._previous = None
+
+    def memory(self) -> ControllerMemory:
+        """The warm start the next ``update`` will use (a reference, not a copy)."""
+        return ControllerMemory([self._previous])
+
+    def restore(self, memory: ControllerMemory) -> None:
+        """Continue from ``memory`` (e.g. a logged keyframe): the next update uses it."""
+        self._previous = memory.previous[0]
 
     def update(self, inputs: MpcInputs) -> MpcPlan:
         start = time.perf_counter()

@@ -9,6 +9,8 @@ stage costs the solver many extra iterations.
 
 from __future__ import annotations
 
+from dataclasses import dataclass
+
 import numpy as np
 
 from core.layout import BlockLayout
@@ -91,3 +93,18 @@ def initial_guess(
         conform_forces(guess, layout, f"grf_{key}", inputs.contacts[r],
                        team.robots[r].mass_kg + payload_share_kg, g)
     return guess
+
+
+@dataclass
+class ControllerMemory:
+    """What an NMPC carries from one update to the next (its warm start).
+
+    ``previous``: the last NLP solution per local problem (one entry for the centralized NMPC,
+    one per agent for ADMM; None before the first solve). ``consensus`` and ``duals``: the ADMM
+    consensus trajectory s_bar and scaled duals w^i (None when centralized or before the first
+    update). Together with an update's ``MpcInputs`` this determines the update exactly.
+    """
+
+    previous: list[NlpSolution | None]
+    consensus: np.ndarray | None = None
+    duals: np.ndarray | None = None

@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import argparse
+import signal
 import sys
 from pathlib import Path
 from typing import TYPE_CHECKING
@@ -62,6 +63,30 @@ def _sim(args: argparse.Namespace) -> int:
     return run_sim(args, mpc_settings(args))
 
 
+def _replay(args: argparse.Namespace) -> int:
+    from deploy.replay_command import run_replay
+
+    return run_replay(args)
+
+
+def _log_info(args: argparse.Namespace) -> int:
+    from deploy.log_commands import run_log_info
+
+    return run_log_info(args)
+
+
+def _log_recover(args: argparse.Namespace) -> int:
+    from deploy.log_commands import run_log_recover
+
+    return run_log_recover(args)
+
+
+def _regress(args: argparse.Namespace) -> int:
+    from deploy.log_regression import run_regress
+
+    return run_regress(args)
+
+
 def build_parser() -> argparse.ArgumentParser:
     parser = argparse.ArgumentParser(prog="porter", description=__doc__)
     commands = parser.add_subparsers(dest="command", required=True)
@@ -105,19 +130,62 @@ def build_parser() -> argparse.ArgumentParser:
     sim.add_argument("--delay", action="store_true",
                      help="model computation delay (apply each plan after its solve time)")
     sim.add_argument("--quiet", action="store_true", help="no progress bar")
+    sim.add_argument("--record", metavar="LOG.mcap",
+                     help="flight-recorder file (default runs/<scenario>-<time>.mcap)")
+    sim.add_argument("--no-record", action="store_true", help="do not write a flight log")
+    sim.add_argument("--rerun", nargs="?", const="spawn", metavar="TARGET",
+                     help="stream live to Rerun: spawn a viewer (default), 'connect' to a "
+                          "running one (or a rerun+http:// URL), or a FILE.rrd")
     sim.set_defaults(handler=_sim)
+
+    replay = commands.add_parser("replay", help="play a flight log in Rerun")
+    replay.add_argument("log", help="LOG.mcap written by porter")
+    target = replay.add_mutually_exclusive_group()
+    target.add_argument("--rrd", metavar="FILE", help="write a Rerun recording instead of "
+                        "opening a viewer (headless)")
+    target.add_argument("--connect", nargs="?", const="", metavar="URL",
+                        help="send to a running viewer (default URL: Rerun's local one)")
+    replay.set_defaults(handler=_replay)
+
+    log = commands.add_parser("log", help="inspect and repair flight logs")
+    log_kinds = log.add_subparsers(dest="log_command", required=True)
+    info = log_kinds.add_parser("info", help="duration, topics, counts, summary metrics")
+    info.add_argument("log", help="LOG.mcap")
+    info.set_defaults(handler=_log_info)
+    recover = log_kinds.add_parser("recover", help="make a killed run's log readable")
+    recover.add_argument("log", help="LOG.mcap left by a run that did not close it")
+    recover.add_argument("-o", "--output", help="recovered file (default LOG.recovered.mcap)")
+    recover.set_defaults(handler=_log_recover)
+
+    regress = commands.add_parser("regress", help="re-run logged NMPC decisions and compare")
+    regress.add_argument("logs", nargs="+", metavar="LOG", help="LOG.mcap files")
+    regress.add_argument("--settings", metavar="YAML",
+                         help="MpcSettings overriding the log's attached ones (what-if)")
+    regress.add_argument("--max-decisions", type=int,
+                         help="replay only the first N decisions of each log")
+    regress.add_argument("--json", help="also write the per-log report as JSON")
+    regress.set_defaults(handler=_regress)
     return parser
+
+
+def _terminate(signum: int, frame: object) -> None:
+    raise KeyboardInterrupt(f"signal {signum}")
 
 
 def main(argv: list[str] | None = None) -> int:
     from deploy.config_files import ConfigError
 
     args = build_parser().parse_args(argv)
+    # SIGTERM unwinds like Ctrl-C: every ``finally`` runs, so logs are closed properly.
+    signal.signal(signal.SIGTERM, _terminate)
     try:
         return int(args.handler(args))
     except ConfigError as error:
         print(f"porter: {error}", file=sys.stderr)
         return 2
+    except KeyboardInterrupt:
+        print("porter: interrupted", file=sys.stderr)
+        return 130
 
 
 if __name__ == "__main__":

@@ -10,6 +10,8 @@ from pathlib import Path
 
 from core.settings import MpcSettings
 from deploy.codegen_cache import CompiledCodeCache
+from deploy.flight_recorder import FlightRecorder
+from deploy.run_record import default_log_path, open_run_recorder
 from deploy.scenario import Scenario, load_scenario
 from deploy.team_loop import TeamLoop, summary_line
 
@@ -41,6 +43,13 @@ def run_sim(args: argparse.Namespace, base_settings: MpcSettings) -> int:
           f"{scenario.controller.mode} NMPC, {scenario.duration_s:g} s on MuJoCo "
           "(the first start compiles the NLPs, about a minute each)", file=sys.stderr)
     loop = TeamLoop(scenario, CompiledCodeCache(), base_settings)
+    recorder: FlightRecorder | None = None
+    if not args.no_record:
+        path = Path(args.record) if args.record else default_log_path(scenario)
+        recorder = open_run_recorder(path, scenario, loop.settings, loop.wbc_settings, "mujoco",
+                                     sinks=live_view_sinks(args, scenario))
+        loop.attach_recorder(recorder)
+        print(f"porter sim: recording to {path}", file=sys.stderr)
     show = not args.quiet
 
     def progress(time_s: float, duration_s: float, wall_s: float) -> None:
@@ -48,12 +57,19 @@ def run_sim(args: argparse.Namespace, base_settings: MpcSettings) -> int:
             print("\r" + summary_line(time_s, duration_s, wall_s), end="", file=sys.stderr,
                   flush=True)
 
+    summary: dict | None = None
     try:
         summary = loop.run(progress)
-    finally:
+    finally:  # Ctrl-C, SIGTERM (raised as KeyboardInterrupt by the CLI) and errors alike
         loop.close()
+        if recorder is not None:
+            recorder.close(summary)
+            if recorder.dropped:
+                print(f"porter sim: the recorder dropped {recorder.dropped} messages",
+                      file=sys.stderr)
     if show:
         print(file=sys.stderr)
+    assert summary is not None
     text = json.dumps(summary, indent=2)
     print(text)
     if args.json:
@@ -63,3 +79,12 @@ def run_sim(args: argparse.Namespace, base_settings: MpcSettings) -> int:
     print(f"porter sim: {verdict}; falls {summary['falls']}; min h {summary['min_h_m']}",
           file=sys.stderr)
     return 0
+
+
+def live_view_sinks(args: argparse.Namespace, scenario: Scenario) -> list:
+    """``--rerun``: stream every recorded message to a Rerun viewer as it is written."""
+    if not getattr(args, "rerun", None):
+        return []
+    from deploy.rerun_view import live_sink
+
+    return [live_sink(args.rerun, scenario.name)]

@@ -36,6 +36,9 @@ from core.settings import MpcSettings, WbcSettings
 from core.team_model import TeamModel
 from core.whole_body_control import FloatingBaseState, WholeBodyController
 from deploy.codegen_cache import CompiledCodeCache
+from deploy.flight_recorder import FlightRecorder
+from deploy.messages.porter_log_pb2 import GroundTruth
+from deploy.loop_recording import LoopRecording
 from deploy.process_executor import ProcessExecutor
 from deploy.scenario import Scenario
 from deploy.sim_metrics import FALL_HEIGHT_FRACTION, MAX_TILT_RAD, RunMetrics
@@ -87,6 +90,7 @@ class TeamLoop:
                  base_settings: MpcSettings | None = None,
                  wbc_settings: WbcSettings | None = None) -> None:
         self.scenario = scenario
+        self.wbc_settings = wbc_settings or WbcSettings()
         self.settings = scenario.mpc_settings(base_settings or MpcSettings())
         team_settings = scenario.team_settings()
         self.team = TeamModel.from_settings(team_settings, srb_parameters)
@@ -107,7 +111,7 @@ class TeamLoop:
             model = load_pinocchio_model(agent.robot_type)
             wbc = WholeBodyController(model, standing_configuration(agent.robot_type, model),
                                       np.asarray(agent.coupling_point_in_robot_m),
-                                      FOOT_RADIUS_M[agent.robot_type], wbc_settings)
+                                      FOOT_RADIUS_M[agent.robot_type], self.wbc_settings)
             legs = LegCoordinator(parameters, gait, scenario.gait.swing_height_m)
             self.robots.append(_Robot(agent.name, self.simulation.robot_driver(agent.name),
                                       wbc, legs))
@@ -124,6 +128,16 @@ class TeamLoop:
         self.metrics = RunMetrics(scenario.name, self.reference.goal_m(),
                                   scenario.goal_tolerance_m, self._pair_names())
         self._payload_estimate: np.ndarray | None = None
+        self._updates = 0
+        self.recording: LoopRecording | None = None
+
+    def attach_recorder(self, recorder: FlightRecorder) -> None:
+        """Record the run to ``recorder`` (see ``deploy.loop_recording`` for what and when)."""
+        self.recording = LoopRecording(
+            recorder, [r.name for r in self.robots], self.obstacles,
+            [o.height_m for o in self.scenario.obstacles],
+            self.settings.safety.safety_distance_m, self.settings.sample_period_s,
+            np.asarray(self.scenario.payload.size_m))
 
     def _pair_names(self) -> list[str]:
         bodies = [PAYLOAD_NAME] + [r.name for r in self.robots]
@@ -150,12 +164,19 @@ class TeamLoop:
         pending: tuple[float, MpcPlan] | None = None
         plan_start_s = 0.0
         next_update = 0
+        recording = self.recording
+        if recording is not None:
+            recording.start(sim.time_s, f"start: scenario {self.scenario.name}, "
+                            f"{self.scenario.controller.mode} NMPC, seed {self.scenario.seed}")
         start = time.perf_counter()
         for tick in range(total_ticks):
             t = sim.time_s
             while pushes and pushes[0].time_s <= t + 1e-9:
                 push = pushes.pop(0)
                 sim.apply_push(push.target, np.asarray(push.force_n), push.duration_s)
+                if recording is not None:
+                    recording.event(t, f"push on {push.target}: {list(push.force_n)} N for "
+                                    f"{push.duration_s} s")
             measurements = [r.driver.read() for r in self.robots]
             applied = False  # a new plan takes effect this tick
             if t >= next_update * ts - 1e-9:
@@ -173,14 +194,23 @@ class TeamLoop:
             sim.step(WBC_DECIMATION)
             if applied:  # the new plan's first step: its planned wrench vs the coupling's
                 for i, robot in enumerate(self.robots):
-                    self.metrics.record_wrench(plan.wrench[i, 0:3],
-                                               sim.coupling_wrench(robot.name)[0])
+                    measured = sim.coupling_wrench(robot.name)
+                    self.metrics.record_wrench(plan.wrench[i, 0:3], measured[0])
+                    if recording is not None:
+                        recording.plan_applied(sim.time_s, robot.name, plan.wrench[i], measured)
             if self._record_ground_truth(sim.time_s):
+                if recording is not None:
+                    recording.event(sim.time_s, "fall: " + ", ".join(self.metrics.fallen_robots)
+                                    + "; run stopped", level=2)
                 break
             if progress is not None and (tick + 1) % 50 == 0:
                 progress(sim.time_s, self.scenario.duration_s, time.perf_counter() - start)
         self.metrics.wall_s = time.perf_counter() - start
-        return self.metrics.summary()
+        summary = self.metrics.summary()
+        if recording is not None:
+            recording.event(sim.time_s, f"end: reached goal {summary['reached_goal']}, "
+                            f"falls {summary['falls']}")
+        return summary
 
     def _gait_time(self, t: float) -> float | None:
         """Gait clock: None while settling (all feet down), then time since the gait started."""
@@ -222,8 +252,15 @@ class TeamLoop:
         obstacle_rows = np.array([o.row(t, d_safe) for o in self.obstacles]).reshape(-1, 5)
         inputs = MpcInputs(robot_states, payload, robot_refs, payload_ref, np.array(feet),
                            np.array(contacts), obstacle_rows)
+        update = self._updates
+        self._updates += 1
+        if self.recording is not None:
+            self.recording.nmpc_inputs(t, update, inputs, self.controller.memory())
         plan = self.controller.update(inputs)
         self.metrics.record_plan(plan)
+        if self.recording is not None:
+            self.recording.nmpc_update(t, update, inputs, plan, frame, payload,
+                                       (true_position, true_quaternion))
         return plan
 
     def _wbc_tick(self, t: float, plan: MpcPlan, plan_start_s: float,
@@ -248,9 +285,12 @@ class TeamLoop:
             self.metrics.record_wbc(output.solve_time_s, output.success)
             qdd_velocity = measurement.velocity_rad_s + output.joint_acceleration_rad_s2 * (
                 WBC_DECIMATION * PHYSICS_TIMESTEP_S)
-            robot.driver.send(JointCommand(
-                torque_nm=output.torque_nm, velocity_rad_s=qdd_velocity,
-                kd=np.full(12, robot.wbc.settings.joint_damping_nm_s)))
+            command = JointCommand(torque_nm=output.torque_nm, velocity_rad_s=qdd_velocity,
+                                   kd=np.full(12, robot.wbc.settings.joint_damping_nm_s))
+            robot.driver.send(command)
+            if self.recording is not None:
+                self.recording.wbc_tick(t, robot.name, measurement, command, output, stance,
+                                        feet[0])
 
     def _record_ground_truth(self, t: float) -> bool:
         """Metrics from ground truth; True when a robot has fallen (the run stops)."""
@@ -278,6 +318,15 @@ class TeamLoop:
         coupling = np.array([sim.coupling_error_m(robot.name) for robot in self.robots])
         self.metrics.record_ground_truth(t, position[0:2], yaw, desired[0:2], desired[8], h,
                                          coupling)
+        if self.recording is not None and self.recording.ground_truth_due(t):
+            poses = {PAYLOAD_NAME: (position, quaternion)}
+            poses.update({robot.name: sim.base_pose(robot.name) for robot in self.robots})
+            self.recording.ground_truth(t, poses, GroundTruth(
+                time_s=t, payload_position_in_world_m=position, payload_yaw_rad=yaw,
+                desired_payload_position_in_world_m=desired[0:3],
+                desired_payload_yaw_rad=desired[8], pair_names=self.recording.pair_names,
+                h_m=h.reshape(-1), robot_names=[r.name for r in self.robots],
+                coupling_error_m=coupling))
         return fallen
 
 
