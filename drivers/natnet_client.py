@@ -253,12 +253,11 @@ class NatNetClient:
                         self._id_to_name = {d.id: d.name for d in descriptions}
                     self._model_received = True
             elif message_id not in _KNOWN_MESSAGE_IDS:
-                raise NatNetProtocolError(f"unknown message id {message_id}")
+                raise NatNetProtocolError(f"unknown message id {message_id}", "unknown message")
         except NatNetProtocolError as error:
             self.counters.packets_rejected += 1
-            reason = str(error).split(":", 1)[0]
             reasons = self.counters.rejection_reasons
-            reasons[reason] = reasons.get(reason, 0) + 1
+            reasons[error.reason] = reasons.get(error.reason, 0) + 1
 
     def _on_frame(self, frame: FrameOfData) -> None:
         counters = self.counters

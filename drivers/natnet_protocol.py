@@ -74,7 +74,12 @@ class MessageId(IntEnum):
 
 
 class NatNetProtocolError(ValueError):
-    """A packet that is truncated, inconsistent or not a NatNet message."""
+    """A packet that is truncated, inconsistent or not a NatNet message; ``reason`` is a short
+    tag for counting ("truncated", "malformed", "unknown message")."""
+
+    def __init__(self, message: str, reason: str = "malformed") -> None:
+        super().__init__(message)
+        self.reason = reason
 
 
 @dataclass(frozen=True)
@@ -144,7 +149,7 @@ class _Reader:
         if count < 0 or self.offset + count > len(self.data):
             raise NatNetProtocolError(
                 f"{self.what}: truncated, needs {count} bytes at offset {self.offset}, "
-                f"payload has {len(self.data)}")
+                f"payload has {len(self.data)}", "truncated")
         chunk = self.data[self.offset:self.offset + count]
         self.offset += count
         return chunk
@@ -188,11 +193,12 @@ def pack_message(message_id: int, payload: bytes = b"") -> bytes:
 def unpack_message(packet: bytes) -> tuple[int, bytes]:
     """(message id, payload) of one datagram; its size field must match the datagram."""
     if len(packet) < HEADER.size:
-        raise NatNetProtocolError(f"packet of {len(packet)} bytes is shorter than the header")
+        raise NatNetProtocolError(f"packet of {len(packet)} bytes is shorter than the header",
+                                  "truncated")
     message_id, size = HEADER.unpack_from(packet)
     if len(packet) - HEADER.size != size:
         raise NatNetProtocolError(f"message {message_id}: header says {size} payload bytes, "
-                                  f"datagram carries {len(packet) - HEADER.size}")
+                                  f"datagram carries {len(packet) - HEADER.size}", "truncated")
     return int(message_id), bytes(packet[HEADER.size:])
 
 
@@ -215,7 +221,7 @@ def pack_server_info(info: ServerInfo) -> bytes:
 def unpack_server_info(payload: bytes) -> ServerInfo:
     if len(payload) < _SENDER.size:
         raise NatNetProtocolError(f"SERVERINFO: {len(payload)} bytes, expected at least "
-                                  f"{_SENDER.size}")
+                                  f"{_SENDER.size}", "truncated")
     if len(payload) < _SERVER_INFO.size:
         fields = _SENDER.unpack_from(payload)
         return ServerInfo(_decode_name(fields[0], "SERVERINFO"), fields[1:5], fields[5:9],
