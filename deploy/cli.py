@@ -133,6 +133,8 @@ def build_parser() -> argparse.ArgumentParser:
     sim.add_argument("--record", metavar="LOG.mcap",
                      help="flight-recorder file (default runs/<scenario>-<time>.mcap)")
     sim.add_argument("--no-record", action="store_true", help="do not write a flight log")
+    sim.add_argument("--keyframe-every", type=int, metavar="N",
+                     help="log the NMPC warm start every N updates (default 60)")
     sim.add_argument("--rerun", nargs="?", const="spawn", metavar="TARGET",
                      help="stream live to Rerun: spawn a viewer (default), 'connect' to a "
                           "running one (or a rerun+http:// URL), or a FILE.rrd")
@@ -164,6 +166,9 @@ def build_parser() -> argparse.ArgumentParser:
     regress.add_argument("--max-decisions", type=int,
                          help="replay only the first N decisions of each log")
     regress.add_argument("--json", help="also write the per-log report as JSON")
+    regress.add_argument("--refresh-expectations", action="store_true",
+                         help="(re)write LOG.expect.json from each log's summary instead of "
+                              "replaying: review and commit the result deliberately")
     regress.set_defaults(handler=_regress)
     return parser
 

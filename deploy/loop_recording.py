@@ -175,7 +175,6 @@ def update_message(time_s: float, update: int, plan: MpcPlan, missed: bool) -> p
         payload_trajectory=a(plan.payload_trajectory),
         grf_trajectories=a(plan.grf_trajectories),
         wrench_trajectories=a(plan.wrench_trajectories),
-        consensus_trajectory=a(plan.consensus_trajectory),
         max_solve_time_s=max((s.wall_time_s for s in plan.solves), default=0.0),
         total_iterations=sum(s.iterations for s in plan.solves))
     for k, stats in enumerate(plan.solves):

@@ -10,7 +10,7 @@ from pathlib import Path
 
 from core.settings import MpcSettings
 from deploy.codegen_cache import CompiledCodeCache
-from deploy.flight_recorder import FlightRecorder
+from deploy.flight_recorder import FlightRecorder, RecorderSettings
 from deploy.run_record import default_log_path, open_run_recorder
 from deploy.scenario import Scenario, load_scenario
 from deploy.team_loop import TeamLoop, summary_line
@@ -46,8 +46,11 @@ def run_sim(args: argparse.Namespace, base_settings: MpcSettings) -> int:
     recorder: FlightRecorder | None = None
     if not args.no_record:
         path = Path(args.record) if args.record else default_log_path(scenario)
+        settings = RecorderSettings()
+        if getattr(args, "keyframe_every", None):
+            settings = settings.model_copy(update={"warm_start_every": args.keyframe_every})
         recorder = open_run_recorder(path, scenario, loop.settings, loop.wbc_settings, "mujoco",
-                                     sinks=live_view_sinks(args, scenario))
+                                     settings, sinks=live_view_sinks(args, scenario))
         loop.attach_recorder(recorder)
         print(f"porter sim: recording to {path}", file=sys.stderr)
     show = not args.quiet

@@ -1,0 +1,71 @@
+"""Expectations on a log's summary metrics, stored next to it as ``LOG.expect.json``.
+
+Each entry names a summary key (dotted for nested ones, e.g. ``payload_estimate_error.
+position_rms_m``) and a check: ``{"equals": v}``, ``{"min": a}``, ``{"max": b}`` or both.
+``draft_expectations`` proposes them from a log's summary (exact for counts and flags, a band
+around measured values); a human edits and commits them deliberately (see logs/README.md).
+"""
+
+from __future__ import annotations
+
+import json
+from pathlib import Path
+from typing import Any
+
+# Wall-clock figures differ between machines: never expected.
+TIMING_KEYS = {"nmpc_update_ms", "deadline_misses", "wbc_tick_ms", "real_time_factor",
+               "nlp_solve_ms_median", "wall_s", "nmpc_wall_s", "wbc_wall_s"}
+
+
+def expectations_path(log_path: Path) -> Path:
+    return log_path.with_suffix(".expect.json")
+
+
+def _flatten(summary: dict, prefix: str = "") -> dict[str, Any]:
+    flat: dict[str, Any] = {}
+    for key, value in summary.items():
+        name = f"{prefix}{key}"
+        if isinstance(value, dict):
+            flat.update(_flatten(value, name + "."))
+        else:
+            flat[name] = value
+    return flat
+
+
+def check_expectations(summary: dict | None, path: Path) -> list[str]:
+    """Failures (empty when every expectation holds)."""
+    try:
+        expectations = json.loads(path.read_text())
+    except (OSError, json.JSONDecodeError) as error:
+        return [f"{path}: cannot read expectations ({error})"]
+    if summary is None:
+        return [f"{path}: the log has no summary metrics to check"]
+    flat = _flatten(summary)
+    failures = []
+    for key, check in expectations.items():
+        if key not in flat:
+            failures.append(f"{key}: not in the log's summary")
+            continue
+        value = flat[key]
+        if "equals" in check and value != check["equals"]:
+            failures.append(f"{key} = {value!r}, expected {check['equals']!r}")
+        if "min" in check and (value is None or value < check["min"]):
+            failures.append(f"{key} = {value!r}, expected >= {check['min']}")
+        if "max" in check and (value is None or value > check["max"]):
+            failures.append(f"{key} = {value!r}, expected <= {check['max']}")
+    return failures
+
+
+def draft_expectations(summary: dict, relative_band: float = 0.5) -> dict[str, dict]:
+    """Exact checks for flags, counts and names; ``value +- relative_band |value|`` (at least
+    1e-3) for measured floats; nothing for wall-clock figures."""
+    drafted: dict[str, dict] = {}
+    for key, value in _flatten(summary).items():
+        if key.split(".")[0] in TIMING_KEYS or value is None:
+            continue
+        if isinstance(value, bool | int | str):
+            drafted[key] = {"equals": value}
+        elif isinstance(value, float):
+            band = max(relative_band * abs(value), 1e-3)
+            drafted[key] = {"min": round(value - band, 6), "max": round(value + band, 6)}
+    return drafted
