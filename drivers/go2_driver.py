@@ -8,11 +8,18 @@ Network: the DDS domain is created with an explicit CycloneDDS configuration bou
 network interface: loopback (``lo``) unless ``network_interface`` names another (e.g. the
 robot's ``eth0``/``enp3s0``), so nothing is sent beyond this machine by default. CycloneDDS
 allows one configuration per domain id and process: every driver and fake of one domain in
-a process must name the same interface (``open_participant`` keeps the domains).
+a process must name the same interface (``open_participant`` keeps the domains). Caveat
+(CycloneDDS 11, measured with ``ss -uanp``): the interface choice governs what is advertised
+and where packets are sent, but CycloneDDS still binds its well-known discovery / data receive
+ports to 0.0.0.0 (only the transmit socket is bound to 127.0.0.1); we found no option to bind
+them to one address. Firewall those ports (7400 + 250 x domain id, ...) if that matters.
 
 Round trip (for ``porter bench drivers``): ``t = driver.clock(); driver.send(command);
 driver.wait_for_state(after_s=t, timeout_s=...)`` returns once a state received after ``t``
-is in, so ``driver.clock() - t`` is command out + peer reaction + state back.
+is in, so ``driver.clock() - t`` is command out + peer reaction + state back. Measured with
+``FakeGo2`` in one process: ~1.0 ms, mostly cyclonedds' pure-Python (de)serialization
+(LowState_ ~0.25 ms each way, LowCmd_ ~0.2 / 0.15 ms): a 500 Hz loop spends ~25 % of a core
+on it.
 """
 
 from __future__ import annotations

@@ -103,7 +103,7 @@ def test_state_round_trip(link):
                                                topic_name(prefix, "lowstate"), LowState_))
     truth = simulation.robot_driver(ROBOT).read()
     fake.publish_state()
-    driver.clock.now_s += 0.01  # type: ignore[attr-defined]
+    driver.clock.now_s += 0.01
     measurement = driver.read()
     for name in ("position_rad", "velocity_rad_s", "torque_nm", "quaternion_wxyz",
                  "angular_velocity_in_body_rad_s"):
@@ -204,7 +204,7 @@ def test_implausible_states_are_rejected(link):
 def test_link_lost_then_recovered(link):
     _, fake, driver, _ = link
     driver.read()
-    driver.clock.now_s += 0.2  # type: ignore[attr-defined]
+    driver.clock.now_s += 0.2
     with pytest.raises(LinkLostError, match=r"rt/lowstate on DDS domain 57.*timeout 0.05 s"):
         driver.read()
     fake.publish_state()
