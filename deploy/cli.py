@@ -181,7 +181,7 @@ def main(argv: list[str] | None = None) -> int:
     from deploy.config_files import ConfigError
 
     args = build_parser().parse_args(argv)
-    # SIGTERM unwinds like Ctrl-C: every ``finally`` runs, so logs are closed properly.
+    # Outside loops that poll a StopRequest, SIGTERM unwinds like Ctrl-C: ``finally`` blocks run.
     signal.signal(signal.SIGTERM, _terminate)
     try:
         return int(args.handler(args))

@@ -92,16 +92,23 @@ class FlightRecorder:
 
     def event(self, time_s: float, text: str, source: str = "loop",
               level: int = pb.Event.INFO) -> None:
-        """A state change, fault or warning on ``/events``."""
-        self.log(EVENTS, pb.Event(time_s=time_s, level=level, source=source, text=text), time_s)
+        """A state change, fault or warning on ``/events`` (level: ``pb.Event.INFO`` etc.)."""
+        message = pb.Event(time_s=time_s, source=source, text=text)
+        message.level = level  # type: ignore[assignment]
+        self.log(EVENTS, message, time_s)
 
     def close(self, summary: dict | None = None, timeout_s: float = 30.0) -> None:
         """Drain the queue, write the summary metadata and the index; idempotent."""
         if self._closed:
             return
         self._closed = True
-        self._queue.put(_CLOSE)  # blocks only while the writer drains a full queue
+        try:  # waits only while the writer drains a full queue
+            self._queue.put(_CLOSE, timeout=timeout_s)
+        except queue.Full:
+            self.error = self.error or TimeoutError("writer thread did not drain the queue")
         self._thread.join(timeout_s)
+        if self._thread.is_alive():  # stuck writer: finish the file without it
+            self.error = self.error or TimeoutError("writer thread did not finish")
         try:
             if summary is not None:
                 self._writer.add_metadata(SUMMARY_METADATA, {"json": json.dumps(summary)})

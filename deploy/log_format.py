@@ -10,6 +10,8 @@ in Foxglove ones: converted here, once.
 
 from __future__ import annotations
 
+from typing import Any
+
 import numpy as np
 from foxglove_schemas_protobuf.CubePrimitive_pb2 import CubePrimitive
 from foxglove_schemas_protobuf.CylinderPrimitive_pb2 import CylinderPrimitive
@@ -164,7 +166,7 @@ def payload_box(time_s: float, size_m: np.ndarray) -> SceneUpdate:
     return SceneUpdate(entities=[entity])
 
 
-def _set_pose(pose, position_m: np.ndarray, quaternion_wxyz: np.ndarray) -> None:  # type: ignore[no-untyped-def]
+def _set_pose(pose: Any, position_m: np.ndarray, quaternion_wxyz: np.ndarray) -> None:
     pose.position.x, pose.position.y, pose.position.z = (float(v) for v in position_m)
     w, x, y, z = (float(v) for v in quaternion_wxyz)
     pose.orientation.x, pose.orientation.y, pose.orientation.z, pose.orientation.w = x, y, z, w

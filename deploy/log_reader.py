@@ -11,7 +11,6 @@ from dataclasses import dataclass
 from pathlib import Path
 from typing import Any
 
-from mcap.exceptions import McapError
 from mcap.reader import make_reader
 from mcap.records import Attachment, Channel, Message, Metadata, Schema
 from mcap.stream_reader import StreamReader
@@ -70,7 +69,9 @@ class LogFile:
         try:
             with open(self.path, "rb") as stream:
                 return action(make_reader(stream, decoder_factories=[DecoderFactory()]))
-        except (McapError, ValueError, EOFError, OSError, KeyError) as error:
+        except LogError:
+            raise
+        except Exception as error:  # mcap, zstd, protobuf decode: any damage reads the same
             raise LogError(f"{self.path}: corrupted ({type(error).__name__}: {error})") from None
 
     def metadata(self) -> dict[str, dict[str, str]]:
@@ -113,7 +114,9 @@ class LogFile:
                 for _, channel, message, decoded in reader.iter_decoded_messages(
                         topics=topics, log_time_order=True):
                     yield DecodedMessage(channel.topic, message.log_time, decoded)
-        except (McapError, ValueError, EOFError, KeyError) as error:
+        except LogError:
+            raise
+        except Exception as error:  # mcap, zstd, protobuf decode: any damage reads the same
             raise LogError(f"{self.path}: corrupted ({type(error).__name__}: {error})") from None
 
     def by_topic(self, topics: list[str]) -> dict[str, list[DecodedMessage]]:
@@ -165,7 +168,7 @@ def recover(source: Path | str, destination: Path | str) -> Recovery:
                                           record.media_type, record.data)
                 elif isinstance(record, Metadata):
                     writer.add_metadata(record.name, dict(record.metadata))
-        except (McapError, ValueError, EOFError, Exception) as exc:  # noqa: B014 -- any tail damage
+        except Exception as exc:  # truncation or damage: keep what came before
             error = f"{type(exc).__name__}: {exc}"
         if not started:
             writer.start(profile=PROFILE, library="porter log recover")

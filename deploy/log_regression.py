@@ -3,10 +3,10 @@
 For each log: rebuild the controller from the log's attached scenario and effective NMPC
 settings (or ``--settings``), then for every decision in order restore the warm-start keyframe
 when one was logged for it, feed the logged ``MpcInputs`` and compare the outputs with the
-logged ones: first-stage GRFs and wrenches, predicted payload and robot trajectories, the ADMM
-predicted wrenches (for ADMM: the consensus), ADMM residuals per iteration, and every solve's status. Between keyframes the warm
-start is the replayed previous decision, which is exact as long as the replay is. Then the
-log's summary metrics are checked against the expectations stored next to it
+logged ones: first-stage GRFs and wrenches, predicted payload and robot trajectories and
+wrenches (with ADMM: the consensus), ADMM residuals per iteration, and every solve's status.
+Between keyframes the warm start is the replayed previous decision, which is exact as long as
+the replay is. Then the log's summary metrics are checked against the expectations stored next to it
 (``LOG.expect.json``). Exit code 1 when anything is outside its tolerance.
 """
 
@@ -114,13 +114,15 @@ def compare(report: LogRegression, update: int, plan: MpcPlan, logged: pb.NmpcUp
              "payload_trajectory": (plan.payload_trajectory, a(logged.payload_trajectory)),
              "robot_trajectories": (plan.robot_trajectories, a(logged.robot_trajectories))}
     pairs["wrench_trajectories"] = (plan.wrench_trajectories, a(logged.wrench_trajectories))
-    for r, (ours, theirs) in enumerate(zip(plan.admm_iterations, iterations, strict=False)):
-        _fold(report, "admm_primal", np.concatenate([ours.primal_payload_rms,
-                                                     ours.primal_wrench_rms]),
-              np.concatenate([theirs.primal_payload_rms, theirs.primal_wrench_rms]), update, r)
-        scale = max(abs(theirs.dual_norm), 1.0)
-        _fold(report, "admm_dual_relative", np.array([ours.dual_norm / scale]),
-              np.array([theirs.dual_norm / scale]), update, r)
+    for r, (replayed, recorded) in enumerate(zip(plan.admm_iterations, iterations,
+                                                 strict=False)):
+        _fold(report, "admm_primal", np.concatenate([replayed.primal_payload_rms,
+                                                     replayed.primal_wrench_rms]),
+              np.concatenate([recorded.primal_payload_rms, recorded.primal_wrench_rms]), update,
+              r)
+        scale = max(abs(recorded.dual_norm), 1.0)
+        _fold(report, "admm_dual_relative", np.array([replayed.dual_norm / scale]),
+              np.array([recorded.dual_norm / scale]), update, r)
     for key, (ours, theirs) in pairs.items():
         _fold(report, key, ours, theirs, update)
     logged_status = [(s.status, s.success) for s in logged.solves]

@@ -13,6 +13,7 @@ from deploy.codegen_cache import CompiledCodeCache
 from deploy.flight_recorder import FlightRecorder, RecorderSettings
 from deploy.run_record import default_log_path, open_run_recorder
 from deploy.scenario import Scenario, load_scenario
+from deploy.stop_request import StopRequest
 from deploy.team_loop import TeamLoop, summary_line
 
 
@@ -61,8 +62,10 @@ def run_sim(args: argparse.Namespace, base_settings: MpcSettings) -> int:
                   flush=True)
 
     summary: dict | None = None
+    stop = StopRequest()
     try:
-        summary = loop.run(progress)
+        with stop.installed():
+            summary = loop.run(progress, stop)
     finally:  # Ctrl-C, SIGTERM (raised as KeyboardInterrupt by the CLI) and errors alike
         loop.close()
         if recorder is not None:
@@ -81,6 +84,10 @@ def run_sim(args: argparse.Namespace, base_settings: MpcSettings) -> int:
     verdict = ("reached the goal" if summary["reached_goal"] else "did NOT reach the goal")
     print(f"porter sim: {verdict}; falls {summary['falls']}; min h {summary['min_h_m']}",
           file=sys.stderr)
+    if stop():
+        print(f"porter sim: stopped by {stop.reason} at {summary['duration_s']:.2f} s",
+              file=sys.stderr)
+        return 130
     return 0
 
 

@@ -52,6 +52,7 @@ class RunMetrics:
     duration_s: float = 0.0
     wall_s: float = 0.0
     final_payload_xy_m: np.ndarray | None = None
+    stopped_early: bool = False  # a stop was requested (Ctrl-C, SIGTERM) before the end
 
     def record_ground_truth(self, time_s: float, payload_xy_m: np.ndarray, payload_yaw_rad: float,
                             desired_xy_m: np.ndarray, desired_yaw_rad: float,
@@ -116,6 +117,7 @@ class RunMetrics:
             "scenario": self.scenario,
             "backend": "mujoco",
             "duration_s": round(self.duration_s, 6),
+            "stopped_early": self.stopped_early,
             "falls": len(self.fallen),
             "fallen_robots": sorted(self.fallen),
             "reached_goal": reached,

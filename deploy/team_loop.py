@@ -37,8 +37,8 @@ from core.team_model import TeamModel
 from core.whole_body_control import FloatingBaseState, WholeBodyController
 from deploy.codegen_cache import CompiledCodeCache
 from deploy.flight_recorder import FlightRecorder
-from deploy.messages.porter_log_pb2 import GroundTruth
 from deploy.loop_recording import LoopRecording
+from deploy.messages.porter_log_pb2 import GroundTruth
 from deploy.process_executor import ProcessExecutor
 from deploy.scenario import Scenario
 from deploy.sim_metrics import FALL_HEIGHT_FRACTION, MAX_TILT_RAD, RunMetrics
@@ -148,8 +148,10 @@ class TeamLoop:
             self.controller.close()
 
     # --- the loop ------------------------------------------------------------------------
-    def run(self, progress: Progress | None = None) -> dict:
-        """Simulate the scenario to its end (or a fall); returns the summary dict."""
+    def run(self, progress: Progress | None = None,
+            stop: Callable[[], bool] | None = None) -> dict:
+        """Simulate the scenario to its end, a fall, or until ``stop()`` is true (checked every
+        tick); returns the summary dict."""
         sim = self.simulation
         ts = self.settings.sample_period_s
         tick_s = WBC_DECIMATION * PHYSICS_TIMESTEP_S
@@ -171,6 +173,11 @@ class TeamLoop:
         start = time.perf_counter()
         for tick in range(total_ticks):
             t = sim.time_s
+            if stop is not None and stop():
+                self.metrics.stopped_early = True
+                if recording is not None:
+                    recording.event(t, "stop requested: run ended early", level=1)
+                break
             while pushes and pushes[0].time_s <= t + 1e-9:
                 push = pushes.pop(0)
                 sim.apply_push(push.target, np.asarray(push.force_n), push.duration_s)
@@ -200,7 +207,7 @@ class TeamLoop:
                         recording.plan_applied(sim.time_s, robot.name, plan.wrench[i], measured)
             if self._record_ground_truth(sim.time_s):
                 if recording is not None:
-                    recording.event(sim.time_s, "fall: " + ", ".join(self.metrics.fallen_robots)
+                    recording.event(sim.time_s, "fall: " + ", ".join(sorted(self.metrics.fallen))
                                     + "; run stopped", level=2)
                 break
             if progress is not None and (tick + 1) % 50 == 0:
