@@ -57,6 +57,25 @@ def _bench_sim(args: argparse.Namespace) -> int:
     return 0
 
 
+def _bench_recorder(args: argparse.Namespace) -> int:
+    import json
+
+    from deploy.bench_recorder import bench_memory, bench_overhead, format_tables
+    from deploy.codegen_cache import CompiledCodeCache
+
+    print(f"porter bench recorder: {args.scenario}, {args.duration} s x {args.repeats} runs "
+          f"each with and without the recorder ({args.executor} ADMM executor); memory over "
+          f"{args.memory_minutes} simulated minutes")
+    rows, messages = bench_overhead(args.scenario, args.duration, args.repeats, args.executor,
+                                    mpc_settings(args), CompiledCodeCache())
+    memory = bench_memory(messages, args.memory_minutes) if args.memory_minutes > 0 else None
+    print(format_tables(rows, memory))
+    if args.json:
+        Path(args.json).write_text(json.dumps({"rows": rows, "memory": memory}, indent=2) + "\n")
+        print(f"wrote {args.json}")
+    return 0
+
+
 def _sim(args: argparse.Namespace) -> int:
     from deploy.sim_command import run_sim
 
@@ -115,6 +134,18 @@ def build_parser() -> argparse.ArgumentParser:
     bench_sim.add_argument("--json", help="also write the rows as JSON {rows: [...]}")
     bench_sim.add_argument("--config", help="YAML file overriding MpcSettings fields")
     bench_sim.set_defaults(handler=_bench_sim)
+
+    bench_rec = bench_kinds.add_parser("recorder", help="flight-recorder overhead, rate, size, "
+                                       "memory")
+    bench_rec.add_argument("--scenario", default="two_go2")
+    bench_rec.add_argument("--duration", type=float, default=4.0, help="simulated s per run")
+    bench_rec.add_argument("--repeats", type=int, default=2, help="runs per configuration")
+    bench_rec.add_argument("--executor", default="process", choices=["process", "serial"])
+    bench_rec.add_argument("--memory-minutes", type=float, default=30.0,
+                           help="simulated minutes for the memory check (0: skip)")
+    bench_rec.add_argument("--json", help="also write the figures as JSON")
+    bench_rec.add_argument("--config", help="YAML file overriding MpcSettings fields")
+    bench_rec.set_defaults(handler=_bench_recorder)
 
     sim = commands.add_parser("sim", help="run a scenario on the embedded MuJoCo backend")
     sim.add_argument("scenario", nargs="?", default="two_go2",

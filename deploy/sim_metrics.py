@@ -43,6 +43,7 @@ class RunMetrics:
     payload_residual: list[float] = field(default_factory=list)
     wrench_residual: list[float] = field(default_factory=list)
     wbc_tick_ms: list[float] = field(default_factory=list)
+    loop_tick_ms: list[float] = field(default_factory=list)  # whole 2 ms loop ticks, wall
     estimate_position_error_m: list[float] = field(default_factory=list)
     wrench_force_error_n: list[float] = field(default_factory=list)
     wrench_force_n: list[float] = field(default_factory=list)
@@ -140,6 +141,7 @@ class RunMetrics:
             "nlp_iterations_mean": float(np.mean(self.solve_iterations))
             if self.solve_iterations else None,
             "flagged_plans": self.flagged_plans,
+            "loop_tick_ms": _distribution(self.loop_tick_ms),
             "wbc_tick_ms": {"median": float(np.median(ticks)),
                             "p95": float(np.percentile(ticks, 95))},
             "wbc_failures": self.wbc_failures,
@@ -159,3 +161,9 @@ class RunMetrics:
 
 def _rms(values: list[float]) -> float | None:
     return float(np.sqrt(np.mean(np.square(values)))) if values else None
+
+
+def _distribution(values_ms: list[float]) -> dict[str, float]:
+    values = np.asarray(values_ms) if values_ms else np.zeros(1)
+    return {"median": float(np.median(values)), "p95": float(np.percentile(values, 95)),
+            "max": float(np.max(values))}

@@ -171,7 +171,12 @@ class TeamLoop:
             recording.start(sim.time_s, f"start: scenario {self.scenario.name}, "
                             f"{self.scenario.controller.mode} NMPC, seed {self.scenario.seed}")
         start = time.perf_counter()
+        tick_start = time.perf_counter()
         for tick in range(total_ticks):
+            if tick:
+                now = time.perf_counter()
+                self.metrics.loop_tick_ms.append(1e3 * (now - tick_start))
+                tick_start = now
             t = sim.time_s
             if stop is not None and stop():
                 self.metrics.stopped_early = True
