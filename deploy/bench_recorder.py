@@ -106,7 +106,7 @@ def bench_memory(messages: list, minutes: float) -> dict:
     start = time.perf_counter()
     for offset_ns in range(0, total_ns, window_ns):
         for topic, message, t in messages:
-            while recorder._queue.qsize() > recorder.settings.queue_size // 2:
+            while recorder.pending > recorder.settings.queue_size // 2:
                 time.sleep(0.001)  # pace to the writer: measure memory, not drops
             recorder.log(topic, message, (t + offset_ns) * 1e-9)
         if offset_ns + window_ns >= next_sample_ns:

@@ -64,9 +64,9 @@ class LoopRecording:
         log(topics["command"], fmt.joint_command(time_s, robot, command), time_s)
         log(topics["wbc"], pb.WbcTick(
             time_s=time_s, robot=robot, success=output.success, status=str(output.status),
-            solve_time_s=output.solve_time_s, stance=stance,
-            contact_force_in_world_n=output.contact_force_n.reshape(-1),
-            foot_target_in_world_m=np.asarray(foot_targets_m).reshape(-1)), time_s)
+            solve_time_s=output.solve_time_s, stance=fmt.as_list(stance),
+            contact_force_in_world_n=fmt.as_list(output.contact_force_n),
+            foot_target_in_world_m=fmt.as_list(foot_targets_m)), time_s)
         self._wbc_times.append(output.solve_time_s)
 
     def nmpc_inputs(self, time_s: float, update: int, inputs: MpcInputs,
