@@ -82,6 +82,12 @@ def _sim(args: argparse.Namespace) -> int:
     return run_sim(args, mpc_settings(args))
 
 
+def _deploy(args: argparse.Namespace) -> int:
+    from deploy.deploy_command import run_deploy
+
+    return run_deploy(args)
+
+
 def _replay(args: argparse.Namespace) -> int:
     from deploy.replay_command import run_replay
 
@@ -170,6 +176,21 @@ def build_parser() -> argparse.ArgumentParser:
                      help="stream live to Rerun: spawn a viewer (default), 'connect' to a "
                           "running one (or a rerun+http:// URL), or a FILE.rrd")
     sim.set_defaults(handler=_sim)
+
+    deploy = commands.add_parser("deploy", help="run the team on robots (or on the simulated "
+                                 "world behind the same drivers)")
+    deploy.add_argument("--config", required=True, metavar="CONFIG.yaml",
+                        help="deploy config (deploy/configs/*.yaml) or a shipped config's name")
+    deploy.add_argument("--backend", choices=["hw", "sim"], default="hw",
+                        help="hw: the robots; sim: MuJoCo behind fakes on loopback (default hw)")
+    deploy.add_argument("--yes", action="store_true", help="arm without asking the operator")
+    deploy.add_argument("--duration", type=float, metavar="S",
+                        help="seconds to run once armed (default: the scenario's duration_s)")
+    deploy.add_argument("--record", metavar="LOG.mcap",
+                        help="flight log (default runs/deploy-<scenario>-<time>.mcap)")
+    deploy.add_argument("--no-record", action="store_true",
+                        help="no flight log (--backend sim only)")
+    deploy.set_defaults(handler=_deploy)
 
     replay = commands.add_parser("replay", help="play a flight log in Rerun")
     replay.add_argument("log", help="LOG.mcap written by porter")

@@ -22,65 +22,43 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from core.admm_executor import LocalSolverSpec
-from core.admm_mpc import DistributedMpc
-from core.centralized_mpc import CentralizedMpc
-from core.gait import TrotGait
-from core.mpc_inputs import MpcInputs
 from core.mpc_plan import MpcPlan
-from core.payload_estimator import PayloadEstimator
-from core.plan_tracking import LegCoordinator, wbc_target
-from core.reference import horizon_references
 from core.rotations import euler_from_rotation, rotation_from_quaternion_wxyz
 from core.settings import MpcSettings, WbcSettings
-from core.team_model import TeamModel
-from core.whole_body_control import FloatingBaseState, WholeBodyController
+from core.whole_body_control import FloatingBaseState
 from deploy.codegen_cache import CompiledCodeCache
 from deploy.flight_recorder import FlightRecorder
 from deploy.loop_recording import LoopRecording
 from deploy.messages.porter_log_pb2 import GroundTruth
-from deploy.process_executor import ProcessExecutor
 from deploy.scenario import Scenario
 from deploy.sim_metrics import FALL_HEIGHT_FRACTION, MAX_TILT_RAD, RunMetrics
-from drivers.interfaces import JointCommand, MocapFrame, RobotDriver, RobotMeasurement
+from deploy.team_controller import (
+    SETTLE_S,
+    RobotControl,
+    TeamController,
+    measurement_state,
+    mocap_state,
+)
+from drivers.interfaces import RobotDriver, RobotMeasurement
 from drivers.mujoco_scene import build_team_scene
 from drivers.mujoco_sim import PAYLOAD_NAME, TeamSimulation
-from drivers.robot_descriptions import (
-    FOOT_RADIUS_M,
-    load_pinocchio_model,
-    srb_parameters,
-    standing_configuration,
-)
+
+__all__ = ["SETTLE_S", "TeamLoop", "measurement_state", "mocap_state", "summary_line"]
 
 PHYSICS_TIMESTEP_S = 0.001
 WBC_DECIMATION = 2  # physics steps per WBC tick: 500 Hz
-SETTLE_S = 0.3  # standing (all feet down) before the gait starts and the reference moves
 
 Progress = Callable[[float, float, float], None]  # (sim time, duration, wall time) [s]
 
 
 @dataclass
 class _Robot:
-    name: str
+    control: RobotControl
     driver: RobotDriver
-    wbc: WholeBodyController
-    legs: LegCoordinator
 
-
-def measurement_state(measurement: RobotMeasurement) -> FloatingBaseState:
-    """The WBC's floating-base state from a robot's own sensors."""
-    return FloatingBaseState(
-        measurement.position_in_world_m, measurement.quaternion_wxyz,
-        measurement.linear_velocity_in_world_m_s, measurement.angular_velocity_in_body_rad_s,
-        measurement.position_rad, measurement.velocity_rad_s)
-
-
-def mocap_state(measurement: RobotMeasurement, frame: MocapFrame, name: str) -> FloatingBaseState:
-    """Pose from the MoCap frame, twist and joints from the robot (as on hardware)."""
-    position, quaternion = frame.poses[name]
-    return FloatingBaseState(position, quaternion, measurement.linear_velocity_in_world_m_s,
-                             measurement.angular_velocity_in_body_rad_s,
-                             measurement.position_rad, measurement.velocity_rad_s)
+    @property
+    def name(self) -> str:
+        return self.control.name
 
 
 class TeamLoop:
@@ -90,14 +68,16 @@ class TeamLoop:
                  base_settings: MpcSettings | None = None,
                  wbc_settings: WbcSettings | None = None) -> None:
         self.scenario = scenario
-        self.wbc_settings = wbc_settings or WbcSettings()
-        self.settings = scenario.mpc_settings(base_settings or MpcSettings())
-        team_settings = scenario.team_settings()
-        self.team = TeamModel.from_settings(team_settings, srb_parameters)
-        self.reference = scenario.reference.to_reference()
-        self.obstacles = scenario.core_obstacles()
+        self.control = TeamController(scenario, cache, base_settings, wbc_settings,
+                                      tick_s=WBC_DECIMATION * PHYSICS_TIMESTEP_S)
+        self.wbc_settings = self.control.wbc_settings
+        self.settings = self.control.settings
+        self.team = self.control.team
+        self.reference = self.control.reference
+        self.obstacles = self.control.obstacles
+        self.controller = self.control.controller
         scene = build_team_scene(
-            team_settings, payload_true_mass_kg=scenario.true_payload_mass_kg,
+            scenario.team_settings(), payload_true_mass_kg=scenario.true_payload_mass_kg,
             obstacles=[(*o.position_m, o.radius_m, o.height_m) for o in scenario.obstacles],
             timestep_s=PHYSICS_TIMESTEP_S, payload_height_m=scenario.reference.payload_height_m)
         noise = scenario.disturbances
@@ -105,29 +85,10 @@ class TeamLoop:
                                          mocap_position_noise_m=noise.mocap_position_noise_m,
                                          mocap_angle_noise_rad=noise.mocap_angle_noise_rad)
         self.mocap = self.simulation.mocap()
-        gait = TrotGait(scenario.gait.period_s, scenario.gait.duty_factor)
-        self.robots: list[_Robot] = []
-        for agent, parameters in zip(team_settings.agents, self.team.robots, strict=True):
-            model = load_pinocchio_model(agent.robot_type)
-            wbc = WholeBodyController(model, standing_configuration(agent.robot_type, model),
-                                      np.asarray(agent.coupling_point_in_robot_m),
-                                      FOOT_RADIUS_M[agent.robot_type], self.wbc_settings)
-            legs = LegCoordinator(parameters, gait, scenario.gait.swing_height_m)
-            self.robots.append(_Robot(agent.name, self.simulation.robot_driver(agent.name),
-                                      wbc, legs))
-        self.estimator = PayloadEstimator(self.team)
-        cache = cache or CompiledCodeCache()
-        self.controller: CentralizedMpc | DistributedMpc
-        if scenario.controller.mode == "centralized":
-            self.controller = CentralizedMpc(self.team, self.settings, compiler=cache)
-        else:
-            spec = LocalSolverSpec(self.settings, self.team.agent_count, cache)
-            executor = ProcessExecutor(spec) if scenario.controller.executor == "process" else None
-            self.controller = DistributedMpc(self.team, self.settings, executor=executor,
-                                             compiler=cache)
+        self.robots = [_Robot(control, self.simulation.robot_driver(control.name))
+                       for control in self.control.robots]
         self.metrics = RunMetrics(scenario.name, self.reference.goal_m(),
                                   scenario.goal_tolerance_m, self._pair_names())
-        self._payload_estimate: np.ndarray | None = None
         self._updates = 0
         self.recording: LoopRecording | None = None
 
@@ -144,8 +105,7 @@ class TeamLoop:
         return [f"{body}|obstacle_{j}" for body in bodies for j in range(len(self.obstacles))]
 
     def close(self) -> None:
-        if isinstance(self.controller, DistributedMpc):
-            self.controller.close()
+        self.control.close()
 
     # --- the loop ------------------------------------------------------------------------
     def run(self, progress: Progress | None = None,
@@ -158,10 +118,7 @@ class TeamLoop:
         total_ticks = int(round(self.scenario.duration_s / tick_s))
         pushes = sorted(self.scenario.disturbances.pushes, key=lambda p: p.time_s)
         delay = self.scenario.controller.model_computation_delay
-        measurements = [r.driver.read() for r in self.robots]
-        for robot, measurement in zip(self.robots, measurements, strict=True):
-            state = measurement_state(measurement)
-            robot.legs.reset(robot.wbc.srb_state(state), robot.wbc.foot_positions(state))
+        self.control.reset([r.driver.read() for r in self.robots])
         plan: MpcPlan | None = None
         pending: tuple[float, MpcPlan] | None = None
         plan_start_s = 0.0
@@ -224,85 +181,34 @@ class TeamLoop:
                             f"falls {summary['falls']}")
         return summary
 
-    def _gait_time(self, t: float) -> float | None:
-        """Gait clock: None while settling (all feet down), then time since the gait started."""
-        return None if t < SETTLE_S else t - SETTLE_S
-
-    def _reference_time(self, t: float) -> float:
-        return max(t - SETTLE_S, 0.0)
-
     def _nmpc_update(self, t: float, measurements: list[RobotMeasurement]) -> MpcPlan:
-        settings = self.settings
-        n, ts = settings.horizon_steps, settings.sample_period_s
         frame = self.mocap.latest()
         assert frame is not None
-        robot_states = np.array([
-            robot.wbc.srb_state(mocap_state(m, frame, robot.name))
-            for robot, m in zip(self.robots, measurements, strict=True)])
-        payload = self.estimator.estimate(robot_states, self._payload_estimate)
-        self._payload_estimate = payload
+        decision = self.control.nmpc_inputs(t, measurements, frame)
         true_position, true_quaternion = self.simulation.payload_pose()
-        self.metrics.record_estimate(payload, true_position,
+        self.metrics.record_estimate(decision.payload_estimate, true_position,
                                      euler_from_rotation(rotation_from_quaternion_wxyz(true_quaternion)))
-        t_ref = self._reference_time(t)
-        robot_refs, payload_ref = horizon_references(self.team, self.reference, t_ref, n, ts)
-        if t < SETTLE_S:  # hold the start pose while settling
-            robot_refs[:, :, 3:6] = 0.0
-            payload_ref[:, 3:6] = 0.0
-        feet, contacts = [], []
-        gait_time = self._gait_time(t)
-        for i, robot in enumerate(self.robots):
-            if gait_time is None:
-                feet.append(np.repeat(robot.legs.planner.feet_in_world_m[None], n, axis=0))
-                contacts.append(np.ones((n, 4)))
-            else:
-                f, c = robot.legs.planner.horizon(gait_time, n, ts, robot_states[i],
-                                                  robot_refs[i])
-                feet.append(f)
-                contacts.append(c)
-        d_safe = settings.safety.safety_distance_m
-        obstacle_rows = np.array([o.row(t, d_safe) for o in self.obstacles]).reshape(-1, 5)
-        inputs = MpcInputs(robot_states, payload, robot_refs, payload_ref, np.array(feet),
-                           np.array(contacts), obstacle_rows)
         update = self._updates
         self._updates += 1
         if self.recording is not None:
-            self.recording.nmpc_inputs(t, update, inputs, self.controller.memory())
-        plan = self.controller.update(inputs)
+            self.recording.nmpc_inputs(t, update, decision.inputs, self.controller.memory())
+        plan = self.control.update(decision)
         self.metrics.record_plan(plan)
         if self.recording is not None:
-            self.recording.nmpc_update(t, update, inputs, plan, frame, payload,
+            self.recording.nmpc_update(t, update, decision.inputs, plan, frame,
+                                       decision.payload_estimate,
                                        (true_position, true_quaternion))
         return plan
 
     def _wbc_tick(self, t: float, plan: MpcPlan, plan_start_s: float,
                   measurements: list[RobotMeasurement]) -> None:
-        ts = self.settings.sample_period_s
-        gait_time = self._gait_time(t)
-        t_ref = self._reference_time(t)
-        reference = self.reference.payload_state(t_ref)
-        for i, (robot, measurement) in enumerate(zip(self.robots, measurements, strict=True)):
-            state = measurement_state(measurement)
-            srb = robot.wbc.srb_state(state)
-            feet_now = robot.wbc.foot_positions(state)
-            if gait_time is None:
-                stance = np.ones(4)
-                feet = (robot.legs.planner.feet_in_world_m.copy(), np.zeros((4, 3)),
-                        np.zeros((4, 3)))
-            else:
-                stance = robot.legs.advance(gait_time, srb, reference, feet_now)
-                feet = robot.legs.swing_targets(gait_time, srb, reference[3:6])
-            target = wbc_target(plan, i, t - plan_start_s, ts, stance, feet)
-            output = robot.wbc.compute(state, target)
-            self.metrics.record_wbc(output.solve_time_s, output.success)
-            qdd_velocity = measurement.velocity_rad_s + output.joint_acceleration_rad_s2 * (
-                WBC_DECIMATION * PHYSICS_TIMESTEP_S)
-            command = JointCommand(torque_nm=output.torque_nm, velocity_rad_s=qdd_velocity,
-                                   kd=np.full(12, robot.wbc.settings.joint_damping_nm_s))
-            robot.driver.send(command)
+        steps = self.control.wbc_steps(t, plan, plan_start_s, measurements)
+        for robot, measurement, step in zip(self.robots, measurements, steps, strict=True):
+            self.metrics.record_wbc(step.output.solve_time_s, step.output.success)
+            robot.driver.send(step.command)
             if self.recording is not None:
-                self.recording.wbc_tick(t, robot.name, measurement, command, output, stance,
-                                        feet[0])
+                self.recording.wbc_tick(t, robot.name, measurement, step.command, step.output,
+                                        step.stance, step.foot_targets_m)
 
     def _record_ground_truth(self, t: float) -> bool:
         """Metrics from ground truth; True when a robot has fallen (the run stops)."""
@@ -310,16 +216,16 @@ class TeamLoop:
         position, quaternion = sim.payload_pose()
         rotation = rotation_from_quaternion_wxyz(quaternion)
         yaw = float(euler_from_rotation(rotation)[2])
-        desired = self.reference.payload_state(self._reference_time(t))
+        desired = self.reference.payload_state(self.control.reference_time(t))
         bodies = [position[0:2]]
         fallen = False
         for robot in self.robots:
             base_position, base_quaternion = sim.base_pose(robot.name)
-            state = robot.wbc.srb_state(FloatingBaseState(
+            state = robot.control.wbc.srb_state(FloatingBaseState(
                 base_position, base_quaternion, np.zeros(3), np.zeros(3), np.zeros(12),
                 np.zeros(12)))
             bodies.append(state[0:2])
-            nominal = robot.legs.robot.nominal_height_m
+            nominal = robot.control.legs.robot.nominal_height_m
             if state[2] < FALL_HEIGHT_FRACTION * nominal or max(abs(state[6]), abs(state[7])) \
                     > MAX_TILT_RAD:
                 self.metrics.record_fall(robot.name)

@@ -1,0 +1,209 @@
+"""``porter deploy``: end to end on the simulated world behind the real drivers (CycloneDDS,
+NatNet over UDP, python-can), pre-flight reports, config errors; and its parts (postures, the
+MoCap tracker, the base velocity estimate, pacing) on their own."""
+
+from __future__ import annotations
+
+import time
+from pathlib import Path
+
+import numpy as np
+import pinocchio as pin
+import pytest
+import yaml
+
+from core.srb_model import LEG_NAMES
+from deploy.base_velocity import BaseVelocityEstimator
+from deploy.cli import main
+from deploy.config_files import ConfigError
+from deploy.deploy_config import CONFIG_DIR, load_deploy_config
+from deploy.log_reader import LogFile
+from deploy.loop_timing import Pacer, PeriodStats
+from deploy.posture import PostureMove, sitting_posture, standing_posture
+from deploy.scenario import load_scenario
+from drivers.interfaces import JointCommand
+from drivers.mujoco_scene import build_team_scene
+from drivers.mujoco_sim import TeamSimulation
+from drivers.robot_descriptions import load_pinocchio_model
+
+TWO_GO2 = CONFIG_DIR / "two_go2.yaml"
+STATES = ["PREFLIGHT", "STANDING_UP", "ARMED", "RUNNING", "SITTING_DOWN", "DONE"]
+
+
+def _config(tmp_path: Path, **changes: dict) -> Path:
+    """The shipped two-Go2 config with sections updated (merged one level deep)."""
+    data = yaml.safe_load(TWO_GO2.read_text())
+    for section, values in changes.items():
+        data[section] = {**data.get(section, {}), **values}
+    path = tmp_path / "deploy.yaml"
+    path.write_text(yaml.safe_dump(data))
+    return path
+
+
+# --- end to end ---------------------------------------------------------------------------
+@pytest.mark.slow
+def test_deploy_on_the_sim_backend_stands_walks_carries_and_sits_down(
+        tmp_path: Path, capsys: pytest.CaptureFixture[str]) -> None:
+    log_path = tmp_path / "run.mcap"
+    code = main(["deploy", "--config", str(TWO_GO2), "--backend", "sim", "--yes",
+                 "--duration", "3", "--record", str(log_path)])
+    captured = capsys.readouterr()
+    assert code == 0, captured.err
+    log = LogFile(log_path)
+    summary = log.summary()
+    assert summary is not None and summary["final_state"] == "DONE"
+    assert summary["safe_stop"] is None
+    # every state, in order, as recorded events
+    events = [m.message.text for m in log.messages(["/events"]) if m.message.source == "safety"]
+    assert [e.split(":")[0] for e in events] == [
+        f"{a} -> {b}" for a, b in zip(STATES[:-1], STATES[1:], strict=True)]
+    counts, _, _ = log.message_counts()
+    for robot in ("go2_0", "go2_1"):
+        for kind in ("state", "command", "wbc", "wrench"):
+            assert counts.get(f"/robot/{robot}/{kind}", 0) > 0, (robot, kind)
+        assert counts[f"/robot/{robot}/state"] >= counts[f"/robot/{robot}/wbc"]
+    assert counts["/nmpc/update"] >= 60  # 3 s at 60 Hz nominal, slow ticks skipped
+    assert counts["/nmpc/update"] == counts["/nmpc/inputs"]
+    assert log.metadata()["porter"]["backend"] == "sim"
+    # walked and carried: the payload moved toward the goal (MoCap), nobody fell (truth)
+    assert summary["payload"]["progress_toward_goal_m"] > 0.5
+    truth = summary["sim_ground_truth"]
+    for robot in truth["robots"].values():
+        assert robot["max_tilt_rad"] < 0.3
+        assert robot["commands_rejected"] == 0
+        assert robot["position_m"][2] < 0.2  # sat down: lying on its belly at the end
+    assert min(summary["robot_min_height_running_m"].values()) > 0.25
+    # loop timing is reported (simulated seconds when time_scale < 1)
+    for loop in ("wbc_loop", "nmpc_loop"):
+        assert {"rate_hz", "jitter_p50_ms", "jitter_p99_ms"} <= set(summary[loop])
+    assert "wbc_loop" in captured.out
+
+
+def test_preflight_reports_what_is_missing(tmp_path: Path,
+                                           capsys: pytest.CaptureFixture[str]) -> None:
+    """No CAN node (no e-stop heartbeat, no F/T) and a robot Motive does not track."""
+    config = _config(tmp_path, sim={"can_node": False, "untracked_bodies": ["go2_1"],
+                                    "time_scale": 1.0},
+                     preflight={"timeout_s": 1.0})
+    code = main(["deploy", "--config", str(config), "--backend", "sim", "--yes",
+                 "--no-record"])
+    err = capsys.readouterr().err
+    assert code == 1, err
+    assert "[MISSING] e-stop heartbeat: no e-stop heartbeat received yet" in err
+    assert "[MISSING] coupling F/T sensors: no sample from go2_0, go2_1" in err
+    assert "[MISSING] MoCap rigid bodies: not tracked: go2_1 (rigid body 'go2_1')" in err
+    assert "[ok] robot go2_0 link" in err and "[ok] MoCap server" in err
+    assert "STANDING_UP" not in err  # never stood up
+
+
+def test_an_invalid_config_field_is_named(tmp_path: Path,
+                                          capsys: pytest.CaptureFixture[str]) -> None:
+    data = yaml.safe_load(TWO_GO2.read_text())
+    data["robots"]["go2_0"]["domain"] = 3
+    path = tmp_path / "bad.yaml"
+    path.write_text(yaml.safe_dump(data))
+    assert main(["deploy", "--config", str(path), "--backend", "sim", "--yes"]) == 2
+    err = capsys.readouterr().err
+    assert "robots.go2_0.go2.domain" in err and "Extra inputs are not permitted" in err
+
+
+def test_config_cross_checks_name_the_field(tmp_path: Path) -> None:
+    data = yaml.safe_load(TWO_GO2.read_text())
+    data["robots"]["a1_9"] = data["robots"].pop("go2_1")
+    path = tmp_path / "team.yaml"
+    path.write_text(yaml.safe_dump(data))
+    with pytest.raises(ConfigError, match=r"robots: must name the scenario's team.*missing "
+                       r"\['go2_1'\], unknown \['a1_9'\]"):
+        load_deploy_config(path)
+    data = yaml.safe_load(TWO_GO2.read_text())
+    data["mocap"]["local_address"] = "192.168.1.5"
+    path.write_text(yaml.safe_dump(data))
+    with pytest.raises(ConfigError, match="mocap.local_address: 192.168.1.5 is not a loopback"):
+        load_deploy_config(path)
+    data["network_interface"] = "eth0"
+    path.write_text(yaml.safe_dump(data))
+    assert load_deploy_config(path)[0].mocap.local_address == "192.168.1.5"
+
+
+def test_shipped_configs_load() -> None:
+    for path in sorted(CONFIG_DIR.glob("*.yaml")):
+        config, scenario = load_deploy_config(path)
+        assert sorted(config.robots) == sorted(agent.name for agent in scenario.team)
+        assert config.network_interface is None  # loopback unless a user names one
+
+
+def test_no_record_is_refused_on_robots(capsys: pytest.CaptureFixture[str]) -> None:
+    assert main(["deploy", "--config", str(TWO_GO2), "--no-record"]) == 2
+    assert "every run on robots is recorded" in capsys.readouterr().err
+
+
+# --- parts ----------------------------------------------------------------------------------
+@pytest.mark.parametrize("robot_type", ["go2", "a1"])
+def test_sitting_posture_lowers_the_trunk_with_the_feet_in_place(robot_type: str) -> None:
+    model = load_pinocchio_model(robot_type)
+    data = model.createData()
+    feet = [model.getFrameId(f"{leg}_foot") for leg in LEG_NAMES]
+
+    def feet_in_base(legs: np.ndarray) -> np.ndarray:
+        q = pin.neutral(model)
+        q[7:] = legs  # LEG_JOINT_NAMES order is the URDF's
+        pin.framesForwardKinematics(model, data, q)
+        return np.array([data.oMf[f].translation for f in feet])
+
+    standing = feet_in_base(standing_posture(robot_type))
+    sitting = feet_in_base(sitting_posture(robot_type, 0.1))
+    np.testing.assert_allclose(sitting - standing, np.tile([0.0, 0.0, 0.1], (4, 1)), atol=1e-5)
+
+
+def test_posture_move_is_smooth_and_ends_at_the_goal() -> None:
+    start, goal = np.zeros(12), np.full(12, 1.0)
+    move = PostureMove(start, goal, start_s=10.0, duration_s=2.0, kp=60.0, kd=3.0)
+    assert np.allclose(move.command(10.0).position_rad, 0.0)
+    assert np.allclose(move.command(11.0).position_rad, 0.5)
+    assert np.allclose(move.command(11.0).velocity_rad_s, 0.75)  # 6 s (1 - s) / T at s = 1/2
+    assert np.allclose(move.command(13.0).position_rad, 1.0) and move.done(12.0)
+    assert np.allclose(move.command(12.0).velocity_rad_s, 0.0)
+
+
+def test_leg_odometry_matches_the_simulated_base_velocity() -> None:
+    scenario = load_scenario("two_go2")
+    scene = build_team_scene(scenario.team_settings(), timestep_s=0.001)
+    simulation = TeamSimulation(scene)
+    for name in ("go2_0", "go2_1"):
+        simulation.set_command(name, JointCommand.hold(standing_posture("go2"), 60.0, 3.0))
+    simulation.apply_push("payload", np.array([40.0, 20.0, 0.0]), 0.3)
+    estimator = BaseVelocityEstimator("go2")
+    driver = simulation.robot_driver("go2_0")
+    errors, speeds = [], []
+    for _ in range(400):
+        simulation.step(2)
+        measurement = driver.read()
+        legs = estimator.leg_odometry(measurement)
+        assert legs is not None
+        errors.append(np.linalg.norm(legs - measurement.linear_velocity_in_world_m_s))
+        speeds.append(np.linalg.norm(measurement.linear_velocity_in_world_m_s))
+    assert max(speeds) > 0.05  # it moved
+    assert np.sqrt(np.mean(np.square(errors))) < 0.015  # m/s (feet slip a little)
+
+
+def test_pacer_keeps_the_period_and_reanchors_when_late() -> None:
+    now = [0.0]
+    pacer = Pacer(0.002, clock=lambda: now[0], sleep=lambda s: now.__setitem__(0, now[0] + s))
+    stats = PeriodStats(0.002)
+    for tick in range(5):
+        stats.tick(now[0])
+        now[0] += 0.0005 if tick != 2 else 0.0065  # tick 2 takes 6.5 ms
+        pacer.wait()
+    assert pacer.overruns == 1
+    summary = stats.summary()
+    assert summary["ticks"] == 5 and summary["late_ticks"] == 1
+    assert summary["period_p50_ms"] == pytest.approx(2.0)
+
+
+def test_period_stats_of_a_real_sleep_loop() -> None:
+    pacer = Pacer(0.005)
+    stats = PeriodStats(0.005)
+    for _ in range(20):
+        stats.tick(time.monotonic())
+        pacer.wait()
+    assert stats.summary()["rate_hz"] == pytest.approx(200.0, rel=0.3)
