@@ -63,7 +63,8 @@ def test_deploy_on_the_sim_backend_stands_walks_carries_and_sits_down(
             assert counts.get(f"/robot/{robot}/{kind}", 0) > 0, (robot, kind)
         assert counts[f"/robot/{robot}/state"] >= counts[f"/robot/{robot}/wbc"]
     assert counts["/nmpc/update"] >= 60  # 3 s at 60 Hz nominal, slow ticks skipped
-    assert counts["/nmpc/update"] == counts["/nmpc/inputs"]
+    # every decision's outcome is logged, but for one still running when the team sat down
+    assert counts["/nmpc/inputs"] - counts["/nmpc/update"] in (0, 1)
     assert log.metadata()["porter"]["backend"] == "sim"
     # walked and carried: the payload moved toward the goal (MoCap), nobody fell (truth)
     assert summary["payload"]["progress_toward_goal_m"] > 0.5
