@@ -44,8 +44,8 @@ class OperatorPrompt:
     holding the robots meanwhile): True for ``y``/``yes``, False for anything else or EOF.
     ``assume_yes`` (``--yes``) answers True at once."""
 
-    def __init__(self, assume_yes: bool = False, stream: Any = sys.stdin) -> None:
-        self.stream = stream
+    def __init__(self, assume_yes: bool = False, stream: Any = None) -> None:
+        self.stream = stream if stream is not None else sys.stdin
         self.answer: bool | None = True if assume_yes else None
         self._thread: threading.Thread | None = None
 
@@ -164,7 +164,7 @@ def deploy_summary(loop: DeployLoop, args: argparse.Namespace,
         "wbc_overruns": loop.pacer.overruns if loop.pacer else 0,
         "nmpc_updates": loop.nmpc.updates, "nmpc_deadline_misses": loop.nmpc.deadline_misses,
         "nmpc_failed_updates": loop.nmpc.solver_failures,
-        "wbc_torque_saturations": loop.saturations,
+        "torque_saturations": loop.saturations,
         "time_scale": loop.config.sim.time_scale if backend is not None else 1.0,
         "payload": payload_progress(loop),
         "robot_min_height_running_m": {name: min(h) if h else None

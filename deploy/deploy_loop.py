@@ -53,6 +53,7 @@ from drivers.interfaces import JointCommand, MocapFrame, RobotMeasurement
 from drivers.link_errors import DriverError, LinkLostError
 from drivers.mujoco_sim import PAYLOAD_NAME
 
+SATURATION_MARGIN = 0.25  # commands up to 25 % past a torque limit are clipped to it
 Confirm = Callable[[], bool | None]  # None while the operator has not answered
 S = SafetyState
 
@@ -63,7 +64,7 @@ class DeployLoop:
     def __init__(self, config: DeployConfig, control: TeamController, links: TeamLinks,
                  recorder: FlightRecorder | None, confirm: Confirm, stop: Callable[[], bool],
                  duration_s: float, clock: Callable[[], float] = time.monotonic,
-                 sleep: Callable[[float], None] = time.sleep, out: TextIO = sys.stderr) -> None:
+                 sleep: Callable[[float], None] = time.sleep, out: TextIO | None = None) -> None:
         self.config, self.control, self.links = config, control, links
         self.confirm, self.stop, self.duration_s = confirm, stop, duration_s
         self.clock, self.sleep, self.out = clock, sleep, out
@@ -88,7 +89,7 @@ class DeployLoop:
         self.t0 = clock()
         self.since: dict[SafetyState, float] = {S.PREFLIGHT: 0.0}
         self.moves: dict[str, PostureMove] = {}
-        self.saturations = dict.fromkeys(self.names, 0)  # WBC ticks with a clipped torque
+        self.saturations = dict.fromkeys(self.names, 0)  # ticks with a clipped torque
         self.pacer: Pacer | None = None
         self.report: PreflightReport | None = None
         self.sport_mode: dict[str, str] = {}
@@ -100,7 +101,7 @@ class DeployLoop:
         return self.clock() - self.t0
 
     def say(self, text: str) -> None:
-        print(f"porter deploy: {text}", file=self.out, flush=True)
+        print(f"porter deploy: {text}", file=self.out or sys.stderr, flush=True)
 
     def _on_transition(self, transition: Transition) -> None:
         self.since[transition.target] = transition.time_s
@@ -122,6 +123,7 @@ class DeployLoop:
                     self.sport_mode[name] = "released" if code == 0 else f"refused, code {code}"
                 except DriverError as error:
                     self.sport_mode[name] = str(error)
+        self.since[S.PREFLIGHT] = self.now()  # the pre-flight timeout counts from here
         pacer = self.pacer = Pacer(1.0 / self.config.rates.wbc_hz, self.clock, self.sleep)
         try:
             while not self._tick():
@@ -192,7 +194,8 @@ class DeployLoop:
                   ) -> tuple[dict[str, JointCommand], list[WbcStep] | None]:
         state = self.supervisor.state
         if state in (S.STANDING_UP, S.ARMED, S.SITTING_DOWN):
-            return {name: move.command(t) for name, move in self.moves.items()}, None
+            return {name: self._saturate(name, move.command(t), measurements.get(name))
+                    for name, move in self.moves.items()}, None
         plan = self.nmpc.plan
         if state == S.RUNNING and plan is not None and len(measurements) == len(self.names):
             steps = [replace(step, command=self._saturate(name, step.command, measurements[name]))
@@ -202,15 +205,21 @@ class DeployLoop:
             return {n: step.command for n, step in zip(self.names, steps, strict=True)}, steps
         return {}, None
 
-    def _saturate(self, name: str, command: JointCommand, measurement: RobotMeasurement
+    def _saturate(self, name: str, command: JointCommand, measurement: RobotMeasurement | None
                   ) -> JointCommand:
-        """The WBC's torques respect the limits, its damping term ``kd (qdd dt)`` may push the
-        sum just past them: clip the firmware law's torque at the measured state to the limit
-        (as the motor would) by trimming the feed-forward, and count it."""
+        """Clip the firmware law's torque at the measured state to the limit (as the motor
+        would) by trimming the feed-forward, and count it, when it is at most
+        ``SATURATION_MARGIN`` past the limit: the WBC's own torques respect the limits but its
+        damping term ``kd (qdd dt)`` can push the sum just past them; a posture move's PD
+        starting on a leg in mid-swing (sit-down) brakes it with kd (0 - dq). A command further
+        past a limit is left alone: the supervisor's torque fault stops the team."""
+        if measurement is None:
+            return command
         limit = self.limits[name].torque_nm * self.config.safety.torque_limit_fraction
         total = command.torque_for(measurement.position_rad, measurement.velocity_rad_s)
         clipped = np.clip(total, -limit, limit)
-        if np.array_equal(clipped, total):
+        if np.array_equal(clipped, total) or not np.all(
+                np.abs(total) <= (1.0 + SATURATION_MARGIN) * limit):
             return command
         self.saturations[name] += 1
         return replace(command, torque_nm=command.torque_nm + clipped - total)

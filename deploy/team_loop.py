@@ -10,7 +10,8 @@ from *measured* data -- robot poses from MoCap, velocities from the robots' own 
 estimates, the payload state from ``PayloadEstimator`` -- and the controller plans; then each
 robot's WBC tracks the active plan. With ``controller.model_computation_delay`` a new plan
 becomes active only after its measured update time has passed in simulated time (the old one
-is used meanwhile), as on robots.
+is used meanwhile), as on robots. The control logic itself (NMPC inputs, WBC ticks) is
+``deploy.team_controller``'s, shared with ``porter deploy``.
 """
 
 from __future__ import annotations

@@ -97,6 +97,25 @@ def test_preflight_reports_what_is_missing(tmp_path: Path,
     assert "STANDING_UP" not in err  # never stood up
 
 
+def test_on_robots_with_nothing_connected_preflight_names_every_link(
+        tmp_path: Path, capsys: pytest.CaptureFixture[str]) -> None:
+    data = yaml.safe_load(TWO_GO2.read_text())
+    for link in data["robots"].values():
+        link.update(release_sport_mode=False, topic_prefix=f"test_{id(tmp_path)}")
+    data["mocap"]["data_port"] = 0  # any free port
+    data["preflight"]["timeout_s"] = 0.3
+    path = tmp_path / "hw.yaml"
+    path.write_text(yaml.safe_dump(data))
+    code = main(["deploy", "--config", str(path), "--yes", "--record", str(tmp_path / "hw.mcap")])
+    err = capsys.readouterr().err
+    assert code == 1, err
+    assert "[MISSING] link: CAN: cannot open socketcan channel 'can0'" in err
+    assert "[MISSING] robot go2_0 link: go2_0: " in err and "no valid state received yet" in err
+    assert "[MISSING] MoCap server: no answer from NatNet server 127.0.0.1:1510" in err
+    events = [m.message.text for m in LogFile(tmp_path / "hw.mcap").messages(["/events"])]
+    assert "PREFLIGHT -> DONE: requested: finish" in events
+
+
 def test_an_invalid_config_field_is_named(tmp_path: Path,
                                           capsys: pytest.CaptureFixture[str]) -> None:
     data = yaml.safe_load(TWO_GO2.read_text())
