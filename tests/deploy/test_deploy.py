@@ -4,6 +4,9 @@ MoCap tracker, the base velocity estimate, pacing) on their own."""
 
 from __future__ import annotations
 
+import signal
+import subprocess
+import sys
 import time
 from pathlib import Path
 
@@ -78,6 +81,30 @@ def test_deploy_on_the_sim_backend_stands_walks_carries_and_sits_down(
     for loop in ("wbc_loop", "nmpc_loop"):
         assert {"rate_hz", "jitter_p50_ms", "jitter_p99_ms"} <= set(summary[loop])
     assert "wbc_loop" in captured.out
+
+
+def test_ctrl_c_sits_the_team_down_and_closes_the_log(tmp_path: Path) -> None:
+    """SIGINT while standing up (real time: the posture phases need little CPU)."""
+    config = _config(tmp_path, sim={"time_scale": 1.0})
+    log_path = tmp_path / "run.mcap"
+    process = subprocess.Popen(
+        [sys.executable, "-m", "deploy.cli", "deploy", "--config", str(config), "--backend",
+         "sim", "--yes", "--record", str(log_path)], stdout=subprocess.PIPE,
+        stderr=subprocess.PIPE, text=True, cwd=Path(__file__).parents[2])
+    assert process.stderr is not None
+    lines = []
+    for line in process.stderr:
+        lines.append(line)
+        if "PREFLIGHT -> STANDING_UP" in line:
+            process.send_signal(signal.SIGINT)
+            break
+    _, rest = process.communicate(timeout=120)
+    err = "".join(lines) + rest
+    assert process.returncode == 130, err
+    assert "STANDING_UP -> SITTING_DOWN: requested: begin_sit_down" in err
+    assert "SITTING_DOWN -> DONE" in err and "stop requested while standing up" in err
+    summary = LogFile(log_path).summary()
+    assert summary is not None and summary["result"] == "stop requested while standing up"
 
 
 def test_preflight_reports_what_is_missing(tmp_path: Path,
