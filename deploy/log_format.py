@@ -105,7 +105,7 @@ def joint_command(time_s: float, robot: str, command: JointCommand) -> pb.JointC
 
 
 def as_list(values: np.ndarray) -> list[float]:
-    return np.asarray(values, dtype=float).reshape(-1).tolist()  # type: ignore[no-any-return]
+    return np.asarray(values, dtype=float).reshape(-1).tolist()
 
 
 def pose_in_frame(time_s: float, position_m: np.ndarray, quaternion_wxyz: np.ndarray
