@@ -24,8 +24,6 @@ import socket
 import time
 from collections.abc import Callable
 
-import numpy as np
-
 from drivers.a1_udp_layout import (
     LEVEL_FLAG_LOW,
     LOW_STATE_SIZE,
@@ -36,17 +34,14 @@ from drivers.a1_udp_layout import (
     default_crc,
     encode_low_cmd,
 )
-from drivers.interfaces import JointCommand, RobotMeasurement
 from drivers.link_errors import DriverError, LinkMonitor
 from drivers.unitree_conventions import (
     BaseStateSource,
     WireCommand,
     WireState,
-    damping_wire_command,
-    measurement_from_wire_state,
     state_problem,
-    wire_command_from_joint_command,
 )
+from drivers.unitree_peer import UnitreeLowLevelDriver
 
 ROBOT_ADDRESS = ("192.168.123.10", 8007)
 LOCAL_ADDRESS = "127.0.0.1"
@@ -54,7 +49,7 @@ LOCAL_PORT = 8080
 _RECEIVE_BUFFER_BYTES = 4096  # larger than any valid datagram, so oversize ones are seen
 
 
-class A1Driver:
+class A1Driver(UnitreeLowLevelDriver):
     """One A1 over UDP. ``read`` raises ``LinkLostError`` without a valid state in the last
     ``link_timeout_s`` [s] (on ``clock``, seconds) and recovers when states resume.
 
@@ -70,6 +65,7 @@ class A1Driver:
                  base_state_source: BaseStateSource | None = None, crc: Crc = default_crc,
                  clock: Callable[[], float] = time.monotonic) -> None:
         self._name = name
+        self.motor_mode = MOTOR_MODE_SERVO
         self.robot_address = (socket.gethostbyname(robot_address[0]), int(robot_address[1]))
         self.clock = clock
         self.crc = crc
@@ -90,10 +86,6 @@ class A1Driver:
             link_timeout_s, clock)
         self.commands_sent = 0
         self.last_state: WireState | None = None
-
-    @property
-    def name(self) -> str:
-        return self._name
 
     def close(self) -> None:
         """Close the socket."""
@@ -149,27 +141,6 @@ class A1Driver:
             if left_s <= 0.0:
                 return False
             select.select([self._socket], [], [], min(left_s, 0.05))
-
-    def read(self) -> RobotMeasurement:
-        self.poll()
-        self.link.check()
-        assert self.last_state is not None and self.link.last_receive_time_s is not None
-        return measurement_from_wire_state(self.last_state, self.link.last_receive_time_s,
-                                           self.base_state_source,
-                                           self.foot_force_n_per_count,
-                                           self.contact_threshold_n)
-
-    def send(self, command: JointCommand) -> None:
-        """Send ``command`` as a LowCmd (levelFlag 0xFF, mode 0x0A on the 12 leg motors)."""
-        for field_name in ("torque_nm", "position_rad", "velocity_rad_s", "kp", "kd"):
-            if not np.isfinite(getattr(command, field_name)).all():
-                raise DriverError(f"{self._name}: refusing a non-finite {field_name} command:"
-                                  f" {getattr(command, field_name)}")
-        self.send_wire(wire_command_from_joint_command(command, MOTOR_MODE_SERVO))
-
-    def send_damping(self, kd: float = 2.0) -> None:
-        """Safe stop: position loops off (PosStopF), tau = kd [N m s/rad] x (0 - dq)."""
-        self.send_wire(damping_wire_command(kd, MOTOR_MODE_SERVO))
 
     def send_wire(self, wire: WireCommand) -> None:
         """Send a wire-convention command as a LowCmd datagram."""

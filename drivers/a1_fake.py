@@ -15,8 +15,6 @@ Stepping is the caller's: step the simulation, then ``poll_commands`` / ``publis
 from __future__ import annotations
 
 import socket
-import threading
-import time
 from collections import Counter
 from collections.abc import Callable
 
@@ -35,6 +33,7 @@ from drivers.unitree_conventions import (
     joint_command_from_wire_command,
     wire_state_from_measurement,
 )
+from drivers.unitree_peer import PeriodicThread
 
 
 class FakeA1:
@@ -57,8 +56,7 @@ class FakeA1:
         self.states_published = 0
         self.last_command: JointCommand | None = None
         self._last_source: tuple[str, int] | None = None
-        self._thread: threading.Thread | None = None
-        self._stop = threading.Event()
+        self._runner = PeriodicThread("FakeA1")
 
     def close(self) -> None:
         self.stop()
@@ -117,27 +115,9 @@ class FakeA1:
     def start(self, rate_hz: float, step: Callable[[], None] | None = None) -> None:
         """Run ``step`` (e.g. advance the simulation), ``poll_commands`` and ``publish_state``
         every 1 / ``rate_hz`` s in a daemon thread until ``stop``."""
-        if self._thread is not None:
-            raise RuntimeError("FakeA1 already started")
-        period_s = 1.0 / rate_hz
-        self._stop.clear()
-
-        def loop() -> None:
-            next_s = time.monotonic()
-            while not self._stop.is_set():
-                if step is not None:
-                    step()
-                self.poll_commands()
-                self.publish_state()
-                next_s += period_s
-                self._stop.wait(max(0.0, next_s - time.monotonic()))
-
-        self._thread = threading.Thread(target=loop, name="FakeA1", daemon=True)
-        self._thread.start()
+        calls: list[Callable[[], object]] = [] if step is None else [step]
+        self._runner.start(rate_hz, [*calls, self.poll_commands, self.publish_state])
 
     def stop(self) -> None:
         """Stop the background thread (no-op when not started)."""
-        self._stop.set()
-        if self._thread is not None:
-            self._thread.join()
-            self._thread = None
+        self._runner.stop()

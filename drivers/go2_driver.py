@@ -28,7 +28,6 @@ import logging
 import time
 from collections.abc import Callable
 
-import numpy as np
 from cyclonedds.core import DDSException, ReadCondition, SampleState, ViewState, WaitSet
 from cyclonedds.domain import Domain, DomainParticipant
 from cyclonedds.pub import DataWriter
@@ -47,17 +46,14 @@ from drivers.go2_dds_types import (
     low_cmd_from_wire,
     wire_from_low_state,
 )
-from drivers.interfaces import JointCommand, RobotMeasurement
 from drivers.link_errors import DriverError, LinkMonitor
 from drivers.unitree_conventions import (
     BaseStateSource,
     WireCommand,
     WireState,
-    damping_wire_command,
-    measurement_from_wire_state,
     state_problem,
-    wire_command_from_joint_command,
 )
+from drivers.unitree_peer import UnitreeLowLevelDriver
 
 LOGGER = logging.getLogger(__name__)
 LOOPBACK_INTERFACE = "lo"
@@ -101,7 +97,7 @@ def topic_name(prefix: str, name: str) -> str:
     return f"{prefix.rstrip('/')}/rt/{name}" if prefix else f"rt/{name}"
 
 
-class Go2Driver:
+class Go2Driver(UnitreeLowLevelDriver):
     """One Go2 over DDS. ``read`` raises ``LinkLostError`` without a valid state in the last
     ``link_timeout_s`` [s] (on ``clock``, seconds) and recovers when states resume.
 
@@ -117,6 +113,7 @@ class Go2Driver:
                  base_state_source: BaseStateSource | None = None,
                  clock: Callable[[], float] = time.monotonic) -> None:
         self._name = name
+        self.motor_mode = MOTOR_MODE_SERVO
         self.clock = clock
         self.topic_prefix = topic_prefix
         self.contact_threshold_n = contact_threshold_n
@@ -134,10 +131,6 @@ class Go2Driver:
                                 link_timeout_s, clock)
         self.commands_sent = 0
         self.last_state: WireState | None = None
-
-    @property
-    def name(self) -> str:
-        return self._name
 
     def poll(self) -> int:
         """Take every pending state; keep the newest valid one. Returns how many were valid."""
@@ -167,27 +160,6 @@ class Go2Driver:
             if left_s <= 0.0:
                 return False
             self._waitset.wait(duration(seconds=min(left_s, 0.05)))
-
-    def read(self) -> RobotMeasurement:
-        self.poll()
-        self.link.check()
-        assert self.last_state is not None and self.link.last_receive_time_s is not None
-        return measurement_from_wire_state(self.last_state, self.link.last_receive_time_s,
-                                           self.base_state_source,
-                                           self.foot_force_n_per_count,
-                                           self.contact_threshold_n)
-
-    def send(self, command: JointCommand) -> None:
-        """Publish ``command`` (servo mode 0x01 on the 12 leg motors) with its CRC."""
-        for field_name in ("torque_nm", "position_rad", "velocity_rad_s", "kp", "kd"):
-            if not np.isfinite(getattr(command, field_name)).all():
-                raise DriverError(f"{self._name}: refusing a non-finite {field_name} command:"
-                                  f" {getattr(command, field_name)}")
-        self.send_wire(wire_command_from_joint_command(command, MOTOR_MODE_SERVO))
-
-    def send_damping(self, kd: float = 2.0) -> None:
-        """Safe stop: position loops off (PosStopF), tau = kd [N m s/rad] x (0 - dq)."""
-        self.send_wire(damping_wire_command(kd, MOTOR_MODE_SERVO))
 
     def send_wire(self, wire: WireCommand) -> None:
         """Publish a wire-convention command as a ``LowCmd_`` (head, level flag, CRC set)."""

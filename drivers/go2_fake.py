@@ -15,8 +15,6 @@ real-time use; the caller keeps the simulation safe from concurrent access.
 
 from __future__ import annotations
 
-import threading
-import time
 from collections import Counter
 from collections.abc import Callable
 
@@ -49,6 +47,7 @@ from drivers.unitree_conventions import (
     joint_command_from_wire_command,
     wire_state_from_measurement,
 )
+from drivers.unitree_peer import PeriodicThread
 
 API_NOT_IMPLEMENTED_CODE = 3102  # unitree_sdk2 RPC_ERR_SERVER_API_NOT_IMPL
 COMMAND_QUEUE = Qos(Policy.Reliability.BestEffort, Policy.History.KeepLast(32))
@@ -81,8 +80,7 @@ class FakeGo2:
         self.states_published = 0
         self.last_command: JointCommand | None = None
         self.sport_mode_released = False
-        self._thread: threading.Thread | None = None
-        self._stop = threading.Event()
+        self._runner = PeriodicThread("FakeGo2")
 
     def publish_state(self) -> None:
         """Write the simulated robot's current state as a ``LowState_`` (tick = sim time, ms)."""
@@ -138,27 +136,9 @@ class FakeGo2:
     def start(self, rate_hz: float, step: Callable[[], None] | None = None) -> None:
         """Run ``step`` (e.g. advance the simulation), ``poll_commands`` and ``publish_state``
         every 1 / ``rate_hz`` s in a daemon thread until ``stop``."""
-        if self._thread is not None:
-            raise RuntimeError("FakeGo2 already started")
-        period_s = 1.0 / rate_hz
-        self._stop.clear()
-
-        def loop() -> None:
-            next_s = time.monotonic()
-            while not self._stop.is_set():
-                if step is not None:
-                    step()
-                self.poll_commands()
-                self.publish_state()
-                next_s += period_s
-                self._stop.wait(max(0.0, next_s - time.monotonic()))
-
-        self._thread = threading.Thread(target=loop, name="FakeGo2", daemon=True)
-        self._thread.start()
+        calls: list[Callable[[], object]] = [] if step is None else [step]
+        self._runner.start(rate_hz, [*calls, self.poll_commands, self.publish_state])
 
     def stop(self) -> None:
         """Stop the background thread (no-op when not started)."""
-        self._stop.set()
-        if self._thread is not None:
-            self._thread.join()
-            self._thread = None
+        self._runner.stop()
