@@ -76,6 +76,20 @@ def _bench_recorder(args: argparse.Namespace) -> int:
     return 0
 
 
+def _bench_drivers(args: argparse.Namespace) -> int:
+    from deploy.bench_drivers import format_table, run_bench, write_json
+
+    print(f"porter bench drivers: each shim against its fake on loopback; {args.samples} "
+          f"round trips per Unitree link at 500 Hz, {args.stream_samples} NatNet frames "
+          "(120 Hz) and CAN samples (100 Hz)")
+    rows, counters = run_bench(args.samples, args.stream_samples, args.domain)
+    print(format_table(rows))
+    if args.json:
+        write_json(rows, counters, Path(args.json))
+        print(f"wrote {args.json}")
+    return 0
+
+
 def _sim(args: argparse.Namespace) -> int:
     from deploy.sim_command import run_sim
 
@@ -152,6 +166,16 @@ def build_parser() -> argparse.ArgumentParser:
     bench_rec.add_argument("--json", help="also write the figures as JSON")
     bench_rec.add_argument("--config", help="YAML file overriding MpcSettings fields")
     bench_rec.set_defaults(handler=_bench_recorder)
+
+    bench_drv = bench_kinds.add_parser("drivers", help="latency and jitter of each driver shim "
+                                       "against its fake on loopback")
+    bench_drv.add_argument("--samples", type=int, default=2000,
+                           help="round trips per Unitree link (Go2 DDS, A1 UDP)")
+    bench_drv.add_argument("--stream-samples", type=int, default=600,
+                           help="NatNet frames and CAN samples")
+    bench_drv.add_argument("--domain", type=int, default=0, help="DDS domain id (loopback)")
+    bench_drv.add_argument("--json", help="also write the rows and the peers' counters as JSON")
+    bench_drv.set_defaults(handler=_bench_drivers)
 
     sim = commands.add_parser("sim", help="run a scenario on the embedded MuJoCo backend")
     sim.add_argument("scenario", nargs="?", default="two_go2",

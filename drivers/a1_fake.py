@@ -14,6 +14,7 @@ Stepping is the caller's: step the simulation, then ``poll_commands`` / ``publis
 
 from __future__ import annotations
 
+import select
 import socket
 from collections import Counter
 from collections.abc import Callable
@@ -65,6 +66,12 @@ class FakeA1:
     @property
     def commands_rejected_total(self) -> int:
         return sum(self.commands_rejected.values())
+
+    def wait_for_command(self, timeout_s: float) -> bool:
+        """Block until a datagram is pending or ``timeout_s`` [s] passed (then False); an
+        answering peer (the real A1 answers each LowCmd) then calls ``poll_commands``."""
+        readable, _, _ = select.select([self._socket], [], [], timeout_s)
+        return bool(readable)
 
     def poll_commands(self) -> bool:
         """Check every pending LowCmd in arrival order; send the newest valid one to the sim

@@ -18,6 +18,7 @@ import time
 import weakref
 from collections.abc import Callable, Sequence
 from dataclasses import dataclass, field
+from typing import Self
 
 import can
 import numpy as np
@@ -95,7 +96,7 @@ class _CanReader(can.Listener):
             if self.bus in _OPENED_BUSES:
                 self.bus.shutdown()
 
-    def __enter__(self) -> _CanReader:
+    def __enter__(self) -> Self:
         return self
 
     def __exit__(self, *_: object) -> None:
@@ -136,6 +137,12 @@ class EstopMonitor(_CanReader):
             self.heartbeats_missed += step - 1
         self._last, self._last_receive_s = heartbeat, now_s
         return True
+
+    @property
+    def last_receive_time_s(self) -> float | None:
+        """When (on ``clock``) the last valid heartbeat arrived; None before the first."""
+        with self._lock:
+            return self._last_receive_s
 
     def status(self) -> EstopStatus:
         """Whether running is allowed now, and why (not)."""

@@ -18,10 +18,12 @@ from __future__ import annotations
 from collections import Counter
 from collections.abc import Callable
 
+from cyclonedds.core import ReadCondition, SampleState, ViewState, WaitSet
 from cyclonedds.pub import DataWriter
 from cyclonedds.qos import Policy, Qos
 from cyclonedds.sub import DataReader
 from cyclonedds.topic import Topic
+from cyclonedds.util import duration
 
 from drivers.go2_dds_types import (
     LowCmd_,
@@ -81,6 +83,14 @@ class FakeGo2:
         self.last_command: JointCommand | None = None
         self.sport_mode_released = False
         self._runner = PeriodicThread("FakeGo2")
+        self._command_waitset = WaitSet(p)
+        self._command_waitset.attach(ReadCondition(self._command_reader,
+                                                   SampleState.NotRead | ViewState.Any))
+
+    def wait_for_command(self, timeout_s: float) -> bool:
+        """Block until a ``LowCmd_`` is pending or ``timeout_s`` [s] passed (then False);
+        an answering peer (``porter bench drivers``) then calls ``poll_commands``."""
+        return bool(self._command_waitset.wait(duration(seconds=timeout_s)))
 
     def publish_state(self) -> None:
         """Write the simulated robot's current state as a ``LowState_`` (tick = sim time, ms)."""
