@@ -90,6 +90,22 @@ def _bench_drivers(args: argparse.Namespace) -> int:
     return 0
 
 
+def _bench_deploy(args: argparse.Namespace) -> int:
+    import json
+
+    from deploy.bench_deploy import format_table, run_bench
+
+    print(f"porter bench deploy: {args.config} on the sim backend, time scales "
+          f"{', '.join(f'{s:g}' for s in args.time_scales)}, {args.runs} run(s) each, "
+          f"{args.duration:g} s running (plus pre-flight, stand-up and sit-down)")
+    rows = run_bench(args.config, args.time_scales, args.runs, args.duration)
+    print(format_table(rows))
+    if args.json:
+        Path(args.json).write_text(json.dumps({"rows": rows}, indent=2) + "\n")
+        print(f"wrote {args.json}")
+    return 0
+
+
 def _sim(args: argparse.Namespace) -> int:
     from deploy.sim_command import run_sim
 
@@ -176,6 +192,18 @@ def build_parser() -> argparse.ArgumentParser:
     bench_drv.add_argument("--domain", type=int, default=0, help="DDS domain id (loopback)")
     bench_drv.add_argument("--json", help="also write the rows and the peers' counters as JSON")
     bench_drv.set_defaults(handler=_bench_drivers)
+
+    bench_dep = bench_kinds.add_parser("deploy", help="WBC and NMPC loop timing of porter "
+                                       "deploy --backend sim per time scale")
+    bench_dep.add_argument("--config", default="two_go2",
+                           help="deploy config (path or shipped name; default two_go2)")
+    bench_dep.add_argument("--time-scales", type=float, nargs="+", default=[0.1, 1.0],
+                           help="sim.time_scale values (default 0.1 1.0)")
+    bench_dep.add_argument("--runs", type=int, default=1, help="runs per time scale")
+    bench_dep.add_argument("--duration", type=float, default=3.0,
+                           help="seconds running once armed (simulated)")
+    bench_dep.add_argument("--json", help="also write the rows as JSON")
+    bench_dep.set_defaults(handler=_bench_deploy)
 
     sim = commands.add_parser("sim", help="run a scenario on the embedded MuJoCo backend")
     sim.add_argument("scenario", nargs="?", default="two_go2",

@@ -17,6 +17,7 @@ import yaml
 
 from core.srb_model import LEG_NAMES
 from deploy.base_velocity import BaseVelocityEstimator
+from deploy.bench_deploy import deploy_row, format_table, scaled_config
 from deploy.cli import main
 from deploy.config_files import ConfigError
 from deploy.deploy_config import CONFIG_DIR, load_deploy_config
@@ -81,6 +82,12 @@ def test_deploy_on_the_sim_backend_stands_walks_carries_and_sits_down(
     for loop in ("wbc_loop", "nmpc_loop"):
         assert {"rate_hz", "jitter_p50_ms", "jitter_p99_ms"} <= set(summary[loop])
     assert "wbc_loop" in captured.out
+    # porter bench deploy reads exactly this summary
+    row = deploy_row(summary)
+    assert row["outcome"] == "completed" and row["time_scale"] == summary["time_scale"]
+    assert row["wbc_rate_ratio"] == pytest.approx(summary["wbc_loop"]["rate_hz"] / 500.0)
+    assert row["nmpc_rate_ratio"] == pytest.approx(summary["nmpc_loop"]["rate_hz"] / 60.0)
+    assert "completed" in format_table([row])
 
 
 def test_ctrl_c_sits_the_team_down_and_closes_the_log(tmp_path: Path) -> None:
@@ -177,6 +184,22 @@ def test_shipped_configs_load() -> None:
         config, scenario = load_deploy_config(path)
         assert sorted(config.robots) == sorted(agent.name for agent in scenario.team)
         assert config.network_interface is None  # loopback unless a user names one
+
+
+def test_bench_deploy_scales_a_copy_of_the_config(tmp_path: Path) -> None:
+    scenario_file = tmp_path / "mine.yaml"
+    scenario_file.write_text(yaml.safe_dump(
+        yaml.safe_load((CONFIG_DIR.parent / "scenarios" / "two_go2.yaml").read_text())))
+    original = _config(tmp_path)
+    data = yaml.safe_load(original.read_text())
+    data["scenario"] = "mine.yaml"  # relative to the config: must survive the copy
+    original.write_text(yaml.safe_dump(data))
+    copies = tmp_path / "copies"
+    copies.mkdir()
+    config, scenario = load_deploy_config(scaled_config(original, 0.35, copies))
+    assert config.sim.time_scale == 0.35
+    assert config.robots == load_deploy_config(original)[0].robots
+    assert scenario == load_deploy_config(original)[1]
 
 
 def test_no_record_is_refused_on_robots(capsys: pytest.CaptureFixture[str]) -> None:
