@@ -114,6 +114,23 @@ class PreflightConfig(_Strict):
     start_tolerance_m: float = Field(0.3, gt=0)  # payload this close to the scenario's start
 
 
+class SimFault(_Strict):
+    """A fault the simulated world injects ``at_s`` simulated seconds after it starts running
+    (tests and drills of the safety stop): ``estop_press`` (the CAN node's heartbeats say
+    "stopped"), ``heartbeat_loss`` (they stop), ``mocap_loss`` (NatNet frames stop),
+    ``robot_silent`` (``robot``'s fake stops publishing its state)."""
+
+    at_s: float = Field(ge=0)
+    kind: Literal["estop_press", "heartbeat_loss", "mocap_loss", "robot_silent"]
+    robot: str | None = None
+
+    @model_validator(mode="after")
+    def _robot_iff_silent(self) -> SimFault:
+        if (self.kind == "robot_silent") != (self.robot is not None):
+            raise ValueError("robot: name the robot for robot_silent, and only for it")
+        return self
+
+
 class SimConfig(_Strict):
     """``--backend sim`` only: the MuJoCo world behind the fakes (``deploy.sim_backend``)."""
 
@@ -133,6 +150,7 @@ class SimConfig(_Strict):
     can_node: bool = True  # False: no e-stop heartbeat, no F/T
     untracked_bodies: list[str] = []  # streamed with tracking invalid (Motive lost them)
     silent_robots: list[str] = []  # their fakes never publish a state
+    faults: list[SimFault] = []  # injected while running (see SimFault)
 
 
 class DeployConfig(_Strict):
@@ -235,7 +253,9 @@ def load_deploy_config(path_or_name: Path | str) -> tuple[DeployConfig, Scenario
         raise ConfigError(f"{path}: mocap.obstacle_bodies: {len(config.mocap.obstacle_bodies)}"
                           f" entries for {len(scenario.obstacles)} scenario obstacles")
     for field_name, names in (("sim.untracked_bodies", config.sim.untracked_bodies),
-                              ("sim.silent_robots", config.sim.silent_robots)):
+                              ("sim.silent_robots", config.sim.silent_robots),
+                              ("sim.faults.robot", [f.robot for f in config.sim.faults
+                                                    if f.robot is not None])):
         known = [*team, "payload"] if field_name == "sim.untracked_bodies" else team
         unknown = [name for name in names if name not in known]
         if unknown:

@@ -20,11 +20,17 @@ takes the newest valid command of each fake, advances physics to the (scaled, se
 (at most ``MAX_CATCH_UP_STEPS`` per cycle; beyond that simulated time slips behind wall time
 and ``lag_s`` says by how much), publishes each robot's state, and a MoCap frame / F/T sample
 when due. The control pipe answers ``"ground_truth"`` and ends the world on ``"stop"``.
+
+Faults (``sim.faults``) are injected at their simulated time after the loop starts; from the
+first one on, every command a fake applies is counted, and those with stiffness or
+feed-forward torque (anything but damping) are reported in the ground truth with the last
+time one arrived, so a test sees what reached the motors after the safety stop.
 """
 
 from __future__ import annotations
 
 import contextlib
+import dataclasses
 import math
 import signal
 import threading
@@ -67,6 +73,16 @@ class ScaledClock:
 
     def sleep(self, duration_s: float) -> None:
         time.sleep(duration_s / self.time_scale)
+
+
+@dataclass
+class CommandsAfterFault:
+    """Commands a fake applied since the first injected fault [count]; the last one that was
+    not damping, in simulated seconds after that fault."""
+
+    commands: int = 0
+    non_damping: int = 0
+    last_non_damping_s: float | None = None
 
 
 @dataclass(frozen=True)
@@ -150,6 +166,36 @@ class SimWorld:
         self.max_tilt_rad = dict.fromkeys(self.robot_types, 0.0)
         self.lag_s = 0.0
         self.steps = 0
+        self.silent = set(config.sim.silent_robots)
+        self.mocap_stopped = False
+        self.pending_faults = sorted(config.sim.faults, key=lambda fault: fault.at_s)
+        self.faults_applied: list[dict[str, Any]] = []
+        self.after_fault = {name: CommandsAfterFault() for name in self.robot_types}
+
+    def _inject_due_faults(self, elapsed_s: float) -> None:
+        while self.pending_faults and self.pending_faults[0].at_s <= elapsed_s:
+            fault = self.pending_faults.pop(0)
+            if fault.kind == "estop_press" and self.can_node is not None:
+                self.can_node.press_estop()
+            elif fault.kind == "heartbeat_loss" and self.can_node is not None:
+                self.can_node.stop_heartbeat()
+            elif fault.kind == "mocap_loss":
+                self.mocap_stopped = True
+            elif fault.kind == "robot_silent" and fault.robot is not None:
+                self.silent.add(fault.robot)
+            self.faults_applied.append({"kind": fault.kind, "robot": fault.robot,
+                                        "time_s": self.simulation.time_s})
+
+    def _received(self, name: str, command: JointCommand | None) -> None:
+        """Once a fault is in: count what reaches the motors; damping = no stiffness, no
+        feed-forward torque."""
+        if not self.faults_applied or command is None:
+            return
+        counts = self.after_fault[name]
+        counts.commands += 1
+        if np.any(command.kp != 0.0) or np.any(command.torque_nm != 0.0):
+            counts.non_damping += 1
+            counts.last_non_damping_s = self.simulation.time_s - self.faults_applied[0]["time_s"]
 
     def endpoints(self) -> dict[str, Any]:
         """Where the fakes listen: NatNet command port, each A1's UDP (address, port)."""
@@ -175,11 +221,13 @@ class SimWorld:
                             "max_tilt_rad": self.max_tilt_rad[name],
                             "commands_received": fake.commands_received,
                             "commands_rejected": fake.commands_rejected_total,
-                            "states_published": fake.states_published}
+                            "states_published": fake.states_published,
+                            "after_fault": dataclasses.asdict(self.after_fault[name])}
         return {"time_s": sim.time_s, "payload_start_m": self.payload_start_m.tolist(),
                 "payload_position_m": sim.payload_pose()[0].tolist(), "robots": robots,
                 "lag_s": self.lag_s, "physics_steps": self.steps,
-                "mocap_frames": self.natnet.frames_published}
+                "mocap_frames": self.natnet.frames_published,
+                "faults_applied": self.faults_applied}
 
     def _track(self) -> None:
         for name in self.robot_types:
@@ -194,17 +242,18 @@ class SimWorld:
         scale = settings.time_scale
         cycle_steps = max(1, round(1.0 / (settings.state_rate_hz * dt)))
         mocap_period_s, ft_period_s = 1.0 / settings.mocap_rate_hz, 1.0 / settings.force_torque_rate_hz
-        silent = set(settings.silent_robots)
         start = time.monotonic()
-        next_mocap_s = next_ft_s = sim.time_s
+        start_sim_s = next_mocap_s = next_ft_s = sim.time_s
         while True:
             if control.poll():
                 request = control.recv()
                 if request == "stop":
                     return
                 control.send(self.ground_truth())
-            for fake in self.fakes.values():
-                fake.poll_commands()
+            self._inject_due_faults(sim.time_s - start_sim_s)
+            for name, fake in self.fakes.items():
+                if fake.poll_commands():
+                    self._received(name, fake.last_command)
             due = int(scale * (time.monotonic() - start) / dt) - self.steps
             if due > MAX_CATCH_UP_STEPS:  # cannot keep up: simulated time slips
                 start += (due - MAX_CATCH_UP_STEPS) * dt / scale
@@ -215,10 +264,11 @@ class SimWorld:
                 self.steps += due
                 self._track()
             for name, fake in self.fakes.items():
-                if name not in silent:
+                if name not in self.silent:
                     fake.publish_state()
             if sim.time_s >= next_mocap_s:
-                self.natnet.publish_frame()
+                if not self.mocap_stopped:
+                    self.natnet.publish_frame()
                 next_mocap_s += mocap_period_s * max(1, math.ceil((sim.time_s - next_mocap_s)
                                                                   / mocap_period_s))
             if self.can_node is not None and sim.time_s >= next_ft_s:

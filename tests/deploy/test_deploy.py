@@ -90,6 +90,44 @@ def test_deploy_on_the_sim_backend_stands_walks_carries_and_sits_down(
     assert "completed" in format_table([row])
 
 
+FAULT_AT_S = 3.0  # simulated s after the world starts: running by then (stand-up 1.2 s)
+
+
+@pytest.mark.slow
+@pytest.mark.parametrize(("fault", "cause", "reaction_s"), [
+    ({"kind": "estop_press"}, "e-stop: run not allowed (e-stop pressed", 0.05),
+    ({"kind": "mocap_loss"}, "MoCap lost: no frame for", 0.1 + 0.05),
+    ({"kind": "robot_silent", "robot": "go2_1"}, "robot link lost: go2_1", 0.1 + 0.05),
+], ids=["estop", "mocap", "link"])
+def test_a_fault_while_running_leaves_only_damping_reaching_the_motors(
+        tmp_path: Path, capsys: pytest.CaptureFixture[str], fault: dict, cause: str,
+        reaction_s: float) -> None:
+    """The fake world injects the fault; porter must stop the team (exit 3) and from its
+    reaction time on every command the fakes apply is joint damping, until the end."""
+    config = _config(tmp_path, posture={"stand_up_s": 1.0, "settle_s": 0.2},
+                     sim={"faults": [{"at_s": FAULT_AT_S, **fault}]})
+    log_path = tmp_path / "run.mcap"
+    code = main(["deploy", "--config", str(config), "--backend", "sim", "--yes",
+                 "--duration", "5", "--record", str(log_path)])
+    captured = capsys.readouterr()
+    assert code == 3, captured.err
+    log = LogFile(log_path)
+    summary = log.summary()
+    assert summary is not None and summary["final_state"] == "DONE"
+    assert cause in summary["safe_stop"]
+    events = [m.message.text for m in log.messages(["/events"]) if m.message.source == "safety"]
+    assert [e.split(":")[0] for e in events][-2:] == ["RUNNING -> SAFE_STOP", "SAFE_STOP -> DONE"]
+    truth = summary["sim_ground_truth"]
+    assert [f["kind"] for f in truth["faults_applied"]] == [fault["kind"]]
+    for name, robot in truth["robots"].items():
+        after = robot["after_fault"]
+        # damping kept arriving through SAFE_STOP and DONE (0.5 s each at 500 Hz) ...
+        assert after["commands"] > 200, (name, after)
+        # ... and nothing else once the supervisor could have seen the fault
+        assert after["non_damping"] == 0 or after["last_non_damping_s"] < reaction_s, (
+            name, after)
+
+
 def test_ctrl_c_sits_the_team_down_and_closes_the_log(tmp_path: Path) -> None:
     """SIGINT while standing up (real time: the posture phases need little CPU)."""
     config = _config(tmp_path, sim={"time_scale": 1.0})
