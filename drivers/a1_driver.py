@@ -128,19 +128,8 @@ class A1Driver(UnitreeLowLevelDriver):
         problem = state_problem(state)
         return (problem, None) if problem is not None else ("", state)
 
-    def wait_for_state(self, after_s: float, timeout_s: float) -> bool:
-        """Block until a valid state received later than ``after_s`` (on ``clock``) is in, or
-        ``timeout_s`` [s] passed (then False)."""
-        deadline_s = time.monotonic() + timeout_s
-        while True:
-            self.poll()
-            last_s = self.link.last_receive_time_s
-            if last_s is not None and last_s > after_s:
-                return True
-            left_s = deadline_s - time.monotonic()
-            if left_s <= 0.0:
-                return False
-            select.select([self._socket], [], [], min(left_s, 0.05))
+    def _wait_readable(self, timeout_s: float) -> None:
+        select.select([self._socket], [], [], timeout_s)
 
     def send_wire(self, wire: WireCommand) -> None:
         """Send a wire-convention command as a LowCmd datagram."""

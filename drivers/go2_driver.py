@@ -147,19 +147,8 @@ class Go2Driver(UnitreeLowLevelDriver):
             self.last_state, valid = state, valid + 1
         return valid
 
-    def wait_for_state(self, after_s: float, timeout_s: float) -> bool:
-        """Block until a valid state received later than ``after_s`` (on ``clock``) is in, or
-        ``timeout_s`` [s] passed (then False)."""
-        deadline_s = time.monotonic() + timeout_s
-        while True:
-            self.poll()
-            last_s = self.link.last_receive_time_s
-            if last_s is not None and last_s > after_s:
-                return True
-            left_s = deadline_s - time.monotonic()
-            if left_s <= 0.0:
-                return False
-            self._waitset.wait(duration(seconds=min(left_s, 0.05)))
+    def _wait_readable(self, timeout_s: float) -> None:
+        self._waitset.wait(duration(seconds=timeout_s))
 
     def send_wire(self, wire: WireCommand) -> None:
         """Publish a wire-convention command as a ``LowCmd_`` (head, level flag, CRC set)."""

@@ -44,6 +44,24 @@ class UnitreeLowLevelDriver:
     def send_wire(self, wire: WireCommand) -> None:
         raise NotImplementedError
 
+    def _wait_readable(self, timeout_s: float) -> None:
+        """Block until something may have arrived or ``timeout_s`` [s] passed."""
+        raise NotImplementedError
+
+    def wait_for_state(self, after_s: float, timeout_s: float) -> bool:
+        """Block until a valid state received later than ``after_s`` (on ``clock``) is in, or
+        ``timeout_s`` [s] passed (then False)."""
+        deadline_s = time.monotonic() + timeout_s
+        while True:
+            self.poll()
+            last_s = self.link.last_receive_time_s
+            if last_s is not None and last_s > after_s:
+                return True
+            left_s = deadline_s - time.monotonic()
+            if left_s <= 0.0:
+                return False
+            self._wait_readable(min(left_s, 0.05))
+
     def read(self) -> RobotMeasurement:
         """The latest valid state in porter's conventions; raises ``LinkLostError`` if stale."""
         self.poll()
