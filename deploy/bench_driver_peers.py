@@ -46,6 +46,7 @@ from drivers.natnet_fake import FakeNatNetServer, simulation_pose_source
 from drivers.natnet_protocol import FrameOfData, RigidBodySample, pack_frame_of_data
 from drivers.robot_descriptions import srb_parameters
 from drivers.unitree_conventions import wire_state_from_measurement
+from drivers.unitree_peer import PeriodicThread
 
 GO2, A1 = "go2_0", "a1_1"
 STAMP = struct.Struct("<d")  # raw stream: time.monotonic() of the send [s]
@@ -78,26 +79,6 @@ def _frame_sized_packet(bodies: int) -> int:
     frame = FrameOfData(1, tuple(RigidBodySample(i + 1, (0.0, 0.0, 0.0), (0.0, 0.0, 0.0, 1.0))
                                  for i in range(bodies)))
     return len(pack_frame_of_data(frame))
-
-
-class _Streamer:
-    """Calls ``send`` every 1 / rate_hz s in a thread until ``stop``."""
-
-    def __init__(self, send: Callable[[], object], rate_hz: float) -> None:
-        self._stop = threading.Event()
-
-        def loop() -> None:
-            next_s = time.monotonic()
-            while not self._stop.is_set():
-                send()
-                next_s += 1.0 / rate_hz
-                self._stop.wait(max(0.0, next_s - time.monotonic()))
-        self._thread = threading.Thread(target=loop, daemon=True)
-        self._thread.start()
-
-    def stop(self) -> None:
-        self._stop.set()
-        self._thread.join()
 
 
 def serve(spec: PeerSpec, control: Connection) -> None:
@@ -161,22 +142,20 @@ def serve(spec: PeerSpec, control: Connection) -> None:
                _answer(lambda t: bool(waitset.wait(duration(seconds=t))), raw_dds_answer, stop)]
     control.send({"a1": a1.local_endpoint, "raw_udp": raw_udp.getsockname(),
                   "natnet_command_port": natnet.command_port})
-    streamer: _Streamer | None = None
+    streamer = PeriodicThread("porter-bench-raw-stream")
     try:
         while True:
             request = control.recv()
-            if streamer is not None:
-                streamer.stop()
-                streamer = None
+            streamer.stop()
             natnet.stop_streaming()
             if request[0] == "stop":
                 break
             if request[0] == "stream" and request[1] == "natnet":
                 natnet.start_streaming(request[2])
             elif request[0] == "stream" and request[1] == "raw":
-                streamer = _Streamer(lambda: raw_stream.sendto(
+                streamer.start(request[2], [lambda: raw_stream.sendto(
                     STAMP.pack(time.monotonic()) + raw_padding,
-                    ("127.0.0.1", spec.raw_stream_port)), request[2])
+                    ("127.0.0.1", spec.raw_stream_port))])
             control.send("ok")
     finally:
         stop.set()

@@ -43,6 +43,7 @@ from cyclonedds.topic import Topic
 from cyclonedds.util import duration
 
 from deploy.bench_driver_peers import A1, GO2, STAMP, PeerSpec, serve
+from deploy.sim_backend import free_udp_port
 from drivers.a1_driver import A1Driver
 from drivers.a1_udp_layout import MOTOR_MODE_SERVO as A1_SERVO
 from drivers.a1_udp_layout import encode_low_cmd
@@ -264,12 +265,6 @@ def _can_rows(count: int) -> list[dict[str, Any]]:
     return rows
 
 
-def _free_udp_port() -> int:
-    with socket.socket(socket.AF_INET, socket.SOCK_DGRAM) as probe:
-        probe.bind(("127.0.0.1", 0))
-        return int(probe.getsockname()[1])
-
-
 def run_bench(unitree_samples: int = 2000, stream_samples: int = 600,
               domain_id: int = 0) -> tuple[list[dict[str, Any]], dict[str, Any]]:
     """The rows (see the module doc) and the peers' counters (commands received / rejected
@@ -279,7 +274,7 @@ def run_bench(unitree_samples: int = 2000, stream_samples: int = 600,
     with socket.socket(socket.AF_INET, socket.SOCK_DGRAM) as raw_stream:
         raw_stream.bind(("127.0.0.1", 0))
         spec = PeerSpec(domain_id, f"bench_{os.getpid()}", f"bench_raw_{os.getpid()}",
-                        _free_udp_port(), int(raw_stream.getsockname()[1]))
+                        free_udp_port(), int(raw_stream.getsockname()[1]))
         peers = context.Process(target=serve, args=(spec, child_control), daemon=True,
                                 name="porter-bench-peers")
         peers.start()
