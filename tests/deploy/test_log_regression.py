@@ -33,10 +33,14 @@ def test_shipped_logs_pass(capsys: pytest.CaptureFixture[str]) -> None:
     assert f"{len(SHIPPED)} of {len(SHIPPED)} logs pass" in out
 
 
-def test_replay_is_exact_on_this_machine() -> None:
+def test_replay_agrees_within_the_solver_tolerance() -> None:
+    # Not bit for bit: another CPU, BLAS kernel or compiler changes the last bits (measured
+    # 2.2e-16 on the relative dual residual on one machine, 0 on another).
     report = regress_log(LOGS / "two_go2.mcap", max_decisions=20)
     assert report.decisions == 20 and report.keyframes == 2
-    assert all(value == 0.0 for value in report.max_deviation.values()), report.max_deviation
+    assert report.status_mismatches == 0
+    assert all(report.max_deviation[k] <= TOLERANCES[k] for k in TOLERANCES), report.max_deviation
+    assert report.passed
 
 
 def test_a_changed_cost_weight_fails(tmp_path: Path, capsys: pytest.CaptureFixture[str]) -> None:
