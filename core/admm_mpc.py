@@ -26,7 +26,7 @@ from core.settings import MpcSettings
 from core.srb_model import STATE_SIZE, WRENCH_SIZE
 from core.team_model import TeamModel
 from core.transport_problem import build_transport_problem
-from core.warm_start import ControllerMemory, initial_guess
+from core.warm_start import ControllerMemory, initial_guess, shifted_multipliers
 
 
 class DistributedMpc:
@@ -91,12 +91,17 @@ class DistributedMpc:
         else:
             consensus = self._shift_shared(self._consensus)
             duals = np.array([self._shift_shared(w) for w in self._duals])
+        # Iteration 0 starts from the previous update's multipliers, shifted like the primal;
+        # iteration r + 1 from iteration r's (same instant: only the consensus target moved).
+        multipliers = [None if previous is None else shifted_multipliers(self.problem, previous)
+                       for previous in self._previous]
         solutions: list[NlpSolution] = []
         records: list[AdmmIteration] = []
         for _ in range(iterations):
             requests = []
             for i in range(na):
-                warm = solutions[i] if solutions else self._previous[i]
+                warm = ((solutions[i].constraint_multipliers, solutions[i].bound_multipliers)
+                        if solutions else multipliers[i])
                 agent_parameters = parameters[i].copy()
                 agent_parameters[target_slice] = consensus - duals[i]
                 requests.append(LocalSolveRequest(
@@ -105,8 +110,8 @@ class DistributedMpc:
                     parameters=agent_parameters,
                     lower_bounds=bounds[i][0],
                     upper_bounds=bounds[i][1],
-                    constraint_multipliers=None if warm is None else warm.constraint_multipliers,
-                    bound_multipliers=None if warm is None else warm.bound_multipliers,
+                    constraint_multipliers=None if warm is None else warm[0],
+                    bound_multipliers=None if warm is None else warm[1],
                     warm_start=warm is not None,
                 ))
             results = self.executor.solve_all(requests)
@@ -116,13 +121,8 @@ class DistributedMpc:
             shared = np.array([self.problem.shared_trajectory(s.decision) for s in solutions])
             new_consensus = np.mean(shared + duals, axis=0)
             duals = duals + shared - new_consensus
-            primal = shared - new_consensus
-            records.append(AdmmIteration(
-                primal_payload_rms=_rms(primal[:, : self._payload_size]),
-                primal_wrench_rms=_rms(primal[:, self._payload_size :]),
-                dual_norm=float(np.linalg.norm(self.weights * (new_consensus - consensus))),
-                solves=tuple(result.stats for result in results),
-            ))
+            records.append(self._residuals(shared - new_consensus,
+                                           new_consensus - consensus, results))
             consensus = new_consensus
         self._previous = list(solutions)
         self._consensus, self._duals = consensus, duals
@@ -153,6 +153,21 @@ class DistributedMpc:
         plan.wrench_trajectories = consensus[self._payload_size :].reshape(na, n, WRENCH_SIZE)
         plan.consensus_trajectory = consensus
         return plan
+
+    def _residuals(self, primal: np.ndarray, consensus_change: np.ndarray,
+                   results: list[NlpSolution]) -> AdmmIteration:
+        """Residuals of one iteration from r^i = s^i - s_bar (n_A rows) and s_bar_r - s_bar_{r-1}."""
+        n, na = self.settings.horizon_steps, self.team.agent_count
+        payload = primal[:, : self._payload_size].reshape(na, n, STATE_SIZE)
+        wrench = primal[:, self._payload_size :].reshape(na, na * n, WRENCH_SIZE)
+        return AdmmIteration(
+            primal_payload_rms=_rms(primal[:, : self._payload_size]),
+            primal_wrench_rms=_rms(primal[:, self._payload_size :]),
+            dual_norm=float(np.linalg.norm(self.weights * consensus_change)),
+            solves=tuple(result.stats for result in results),
+            primal_position_rms_m=_rms(payload[:, :, 0:3].reshape(na, -1)),
+            primal_force_rms_n=_rms(wrench[:, :, 0:3].reshape(na, -1)),
+        )
 
     def _shift_shared(self, shared: np.ndarray) -> np.ndarray:
         """Shift a shared-trajectory vector one stage, repeating the last stage."""

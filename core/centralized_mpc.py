@@ -12,7 +12,7 @@ from core.nlp_solver import NlpCompiler, NlpSolution, NlpSolver
 from core.settings import MpcSettings
 from core.team_model import TeamModel
 from core.transport_problem import build_transport_problem
-from core.warm_start import ControllerMemory, initial_guess
+from core.warm_start import ControllerMemory, initial_guess, shifted_multipliers
 
 
 class CentralizedMpc:
@@ -50,12 +50,10 @@ class CentralizedMpc:
         guess = initial_guess(self.problem, self.team, inputs, self._previous, agent=None)
         lower, upper = self.problem.decision_bounds(inputs.contacts)
         previous = self._previous
-        solution = self.solver.solve(
-            guess, parameters, lower, upper,
-            None if previous is None else previous.constraint_multipliers,
-            None if previous is None else previous.bound_multipliers,
-            warm_start=previous is not None,
-        )
+        lam_g, lam_x = (None, None) if previous is None else shifted_multipliers(
+            self.problem, previous)
+        solution = self.solver.solve(guess, parameters, lower, upper, lam_g, lam_x,
+                                     warm_start=previous is not None)
         usable = bool(np.all(np.isfinite(solution.decision)))
         decision = solution.decision if usable else guess
         if usable:

@@ -13,17 +13,21 @@ from core.transport_problem import TransportProblem
 
 @dataclass(frozen=True)
 class AdmmIteration:
-    """Residuals of one ADMM iteration r.
+    """Residuals of one ADMM iteration r (paper eq. 17).
 
-    ``primal_payload_rms`` / ``primal_wrench_rms``: per agent, RMS of s_r^i - s_bar_r over the
-    payload-state part [mixed units of x] and the wrench part [N, N m]; ``dual_norm``:
-    ||P (s_bar_r - s_bar_{r-1})||.
+    ``primal_position_rms_m`` / ``primal_force_rms_n``: per agent, RMS of s_r^i - s_bar_r over
+    the payload positions [m] and over the interaction forces [N] of the horizon (the paper's
+    payload-position and interaction-force residuals). ``primal_payload_rms`` /
+    ``primal_wrench_rms``: the same over the whole payload state [mixed units of x] and the
+    whole wrench [N, N m]. ``dual_norm``: ||P (s_bar_r - s_bar_{r-1})||.
     """
 
     primal_payload_rms: np.ndarray
     primal_wrench_rms: np.ndarray
     dual_norm: float
     solves: tuple[SolveStats, ...]
+    primal_position_rms_m: np.ndarray = field(default_factory=lambda: np.zeros(0))
+    primal_force_rms_n: np.ndarray = field(default_factory=lambda: np.zeros(0))
 
 
 @dataclass
@@ -34,6 +38,9 @@ class MpcPlan:
     robot exerts on the payload; trajectories over stages 0..N (states) or 0..N-1 (inputs).
     ``success`` is False when any solve failed or did not converge: the plan is then the best
     available one (the solver's last iterate if finite, else the shifted previous plan).
+    ``start_inside_margin`` is True when a body starts inside an obstacle's safety margin (more
+    than the flag's tolerance): the plan is still a converged recovery plan, not a failed solve;
+    ``warnings`` say which body and obstacle. ``flagged`` is either.
     """
 
     grf: np.ndarray
@@ -48,20 +55,26 @@ class MpcPlan:
     admm_iterations: list[AdmmIteration] = field(default_factory=list)
     consensus_trajectory: np.ndarray | None = None
     warnings: list[str] = field(default_factory=list)
+    start_inside_margin: bool = False
+
+    @property
+    def flagged(self) -> bool:
+        """A failed solve or a start inside a safety margin."""
+        return not self.success or self.start_inside_margin
 
     def flag_unsafe_start(self, safety_values_m: np.ndarray, tolerance_m: float = 5e-3) -> None:
-        """Mark the plan failed if any body starts inside an obstacle's safety margin.
+        """Flag the plan if any body starts inside an obstacle's safety margin.
 
-        The plan is still the solver's (a recovery plan: the DT-HOCBF drives h back up), but
-        the caller must know the safe set was left. ``safety_values_m``: (1 + n_A, n_O), payload
-        first. Violations within ``tolerance_m`` (model mismatch, sensor noise) are not flagged.
+        The plan is still the solver's (a recovery plan: the DT-HOCBF drives h back up), so
+        ``success`` is untouched, but the caller must know the safe set was left.
+        ``safety_values_m``: (1 + n_A, n_O), payload first. Violations within ``tolerance_m``
+        (model mismatch, sensor noise) are not flagged.
         """
         for body, obstacle in np.argwhere(safety_values_m < -tolerance_m):
             who = "payload" if body == 0 else f"robot {body - 1}"
             self.warnings.append(f"start inside safety margin: {who} vs obstacle {obstacle}, "
                                  f"h = {safety_values_m[body, obstacle]:.3f} m")
-        if self.warnings:
-            self.success = False
+            self.start_inside_margin = True
 
 
 def decode_plan(problem: TransportProblem, team: TeamModel, decision: np.ndarray,

@@ -33,6 +33,9 @@ class NlpProblem:
     upper_constraints: np.ndarray
     equality: list[bool]
     structure: StageStructure
+    # Constraint rows by block, ``<name>@<stage>`` -> (first row, rows): dynamics gaps are
+    # ``gap_<state block>@k`` (leaving stage k), path constraints carry their own names.
+    constraint_blocks: dict[str, tuple[int, int]] = field(default_factory=dict)
 
     @property
     def variable_count(self) -> int:
@@ -51,7 +54,7 @@ class NlpProblem:
 class _Stage:
     states: list[ca.SX] = field(default_factory=list)
     inputs: list[ca.SX] = field(default_factory=list)
-    path: list[tuple[ca.SX, float, float]] = field(default_factory=list)
+    path: list[tuple[str, ca.SX, float, float]] = field(default_factory=list)
     dynamics: list[tuple[ca.SX, ca.SX]] = field(default_factory=list)  # (x_{k+1}, F(x_k, u_k))
 
 
@@ -87,9 +90,13 @@ class StagewiseBuilder:
     def parameter(self, name: str, size: int) -> ca.SX:
         return self.parameters.add(name, size)
 
-    def path(self, stage: int, expression: ca.SX, lower: float, upper: float) -> None:
-        """lower <= expression <= upper at ``stage`` (element-wise, same bounds for all rows)."""
-        self._stages[stage].path.append((expression, lower, upper))
+    def path(self, stage: int, name: str, expression: ca.SX, lower: float, upper: float
+             ) -> None:
+        """lower <= expression <= upper at ``stage`` (element-wise, same bounds for all rows);
+        ``name`` (unique within the stage) names the block, e.g. for shifting multipliers."""
+        if any(existing == name for existing, *_ in self._stages[stage].path):
+            raise ValueError(f"{self.name}: stage {stage}: duplicate path block {name!r}")
+        self._stages[stage].path.append((name, expression, lower, upper))
 
     def dynamics(self, stage: int, next_state: ca.SX, value: ca.SX) -> None:
         """next_state - F(x_k, u_k) = 0 for the transition leaving ``stage``; ``next_state`` must
@@ -104,6 +111,21 @@ class StagewiseBuilder:
         lower: list[np.ndarray] = []
         upper: list[np.ndarray] = []
         counts = []
+        blocks: dict[str, tuple[int, int]] = {}
+        row = 0
+
+        def add_rows(name: str, expression: ca.SX, lo: float, up: float) -> int:
+            nonlocal row
+            n = expression.numel()
+            rows.append(expression)
+            lower.append(np.full(n, lo))
+            upper.append(np.full(n, up))
+            blocks[name] = (row, n)
+            row += n
+            return n
+
+        state_names = {id(symbol): name.rsplit("@", 1)[0] for name, symbol in zip(
+            self.decision.offsets, self.decision.symbols, strict=True)}
         for k, stage in enumerate(self._stages):
             count = 0
             gaps = {id(x): x - value for x, value in stage.dynamics}
@@ -112,15 +134,9 @@ class StagewiseBuilder:
                 if set(gaps) != {id(x) for x in next_states}:
                     raise ValueError(f"{self.name}: stage {k}: one dynamics gap per state block")
                 for x in next_states:
-                    rows.append(gaps[id(x)])
-                    lower.append(np.zeros(x.numel()))
-                    upper.append(np.zeros(x.numel()))
-            for expression, lo, up in stage.path:
-                n = expression.numel()
-                rows.append(expression)
-                lower.append(np.full(n, lo))
-                upper.append(np.full(n, up))
-                count += n
+                    add_rows(f"gap_{state_names[id(x)]}@{k}", gaps[id(x)], 0.0, 0.0)
+            for name, expression, lo, up in stage.path:
+                count += add_rows(f"{name}@{k}", expression, lo, up)
             counts.append(count)
         lbg = np.concatenate(lower)
         ubg = np.concatenate(upper)
@@ -139,4 +155,5 @@ class StagewiseBuilder:
             upper_constraints=ubg,
             equality=[bool(lo == up) for lo, up in zip(lbg, ubg, strict=True)],
             structure=structure,
+            constraint_blocks=blocks,
         )

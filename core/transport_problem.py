@@ -213,8 +213,8 @@ def build_transport_problem(
     coupling = settings.coupling
     safety = settings.safety
     for key in keys:
-        b.path(0, x_robot[key][0] - x0_robot[key], 0.0, 0.0)
-    b.path(0, x_payload[0] - x0_payload, 0.0, 0.0)
+        b.path(0, f"x0_{key}", x_robot[key][0] - x0_robot[key], 0.0, 0.0)
+    b.path(0, "x0_payload", x_payload[0] - x0_payload, 0.0, 0.0)
     for k in range(n):
         rotation_payload = rotation_body_to_world(x_payload[k][6:9])
         acc_payload = payload_acceleration(
@@ -240,19 +240,19 @@ def build_transport_problem(
                 grf[0, :].T - mu * grf[2, :].T, -grf[0, :].T - mu * grf[2, :].T,
                 grf[1, :].T - mu * grf[2, :].T, -grf[1, :].T - mu * grf[2, :].T,
             )
-            b.path(k, friction, -np.inf, 0.0)
+            b.path(k, f"friction_{key}", friction, -np.inf, 0.0)
             if coupling.enabled:
                 kin = coupling_kinematics(
                     x, acc, point_in_robot, x_payload[k], acc_payload,
                     own(key, points_in_payload),
                 )
-                b.path(k, acceleration_level_constraint(
+                b.path(k, f"coupling_{key}", acceleration_level_constraint(
                     kin, coupling.baumgarte, coupling.baumgarte_damping_ratio,
                     coupling.baumgarte_natural_frequency_rad_s,
                 ), 0.0, 0.0)
         if coupling.yaw_torque == "constrain":
             for j in range(na):
-                b.path(k, yaw_torque(x_payload[k], wrench[j][k]), 0.0, 0.0)
+                b.path(k, f"yaw_torque_{j}", yaw_torque(x_payload[k], wrench[j][k]), 0.0, 0.0)
         if k >= 1 and max_obstacles > 0:
             size = OBSTACLE_PARAMETER_SIZE
             barriers = [
@@ -268,7 +268,7 @@ def build_transport_problem(
                     for x, a in bodies
                     for o in range(max_obstacles)
                 ]
-            b.path(k, ca.vertcat(*barriers), 0.0, np.inf)
+            b.path(k, "barriers", ca.vertcat(*barriers), 0.0, np.inf)
 
     # -- cost
     cost = settings.cost

@@ -20,16 +20,36 @@ from core.team_model import TeamModel
 from core.transport_problem import TransportProblem
 
 
+def shift_blocks(offsets: dict[str, tuple[int, int]], values: np.ndarray) -> np.ndarray:
+    """``values`` laid out in ``<block>@<stage>`` blocks, each block moved one stage earlier;
+    a block's last stage is repeated, and a block that exists at one stage only (the initial
+    condition) keeps its value."""
+    last: dict[str, int] = {}
+    for name in offsets:
+        base, stage = name.rsplit("@", 1)
+        last[base] = max(last.get(base, 0), int(stage))
+    source_values = np.asarray(values, dtype=float)
+    shifted = source_values.copy()
+    for name, (start, size) in offsets.items():
+        base, stage = name.rsplit("@", 1)
+        source_start, source_size = offsets[f"{base}@{min(int(stage) + 1, last[base])}"]
+        if source_size == size:
+            shifted[start : start + size] = source_values[source_start : source_start + size]
+    return shifted
+
+
 def shift_solution(layout: BlockLayout, horizon_steps: int, solution: np.ndarray) -> np.ndarray:
     """Previous solution moved one stage earlier, the last stage repeated."""
-    shifted = np.array(solution, dtype=float)
-    for name in layout.offsets:
-        base, stage = name.rsplit("@", 1)
-        k = int(stage)
-        last = horizon_steps if f"{base}@{horizon_steps}" in layout.offsets else horizon_steps - 1
-        source = f"{base}@{min(k + 1, last)}"
-        shifted[layout.slice(name)] = np.asarray(solution)[layout.slice(source)]
-    return shifted
+    del horizon_steps  # every block's stages are in the layout
+    return shift_blocks(layout.offsets, solution)
+
+
+def shifted_multipliers(problem: TransportProblem, previous: NlpSolution
+                        ) -> tuple[np.ndarray, np.ndarray]:
+    """(constraint, bound) multipliers of ``previous`` moved one stage earlier with the same
+    stage map as the primal warm start (``shift_solution``)."""
+    return (shift_blocks(problem.nlp.constraint_blocks, previous.constraint_multipliers),
+            shift_blocks(problem.nlp.decision.offsets, previous.bound_multipliers))
 
 
 def nominal_foot_forces(contacts: np.ndarray, supported_mass_kg: float, gravity_m_s2: float

@@ -38,10 +38,11 @@ from deploy.log_reader import LogError, LogFile
 from deploy.messages import porter_log_pb2 as pb
 from drivers.robot_descriptions import srb_parameters
 
-# Tolerances of a replay. The same compiled solver on the same inputs is deterministic up to
-# the last bits (measured: 0 on one machine, 2.2e-16 relative dual residual on another); the tolerances absorb floating-point differences between machines
-# (BLAS kernels, compilers) that may change an interior-point iteration count, so they sit
-# near the solver's tolerance. Doubling one cost weight deviates by 100x to 1000x more
+# Tolerances of a replay. The same compiled solver on the same inputs is deterministic only up
+# to the last bits (measured: 0 on one machine, 2.2e-16 relative dual residual on another);
+# the tolerances absorb floating-point differences between machines (BLAS kernels,
+# compilers) that may change an interior-point iteration count, so they sit near the
+# solver's tolerance. Doubling one cost weight deviates by 100x to 1000x more
 # (measured: GRF 2.7 N, payload trajectory 2 cm, relative dual residual 0.3).
 # Absolute [N, N m, m, mixed units of the residuals] except the relative dual residual.
 TOLERANCES = {"grf_n": 0.02, "wrench": 0.02, "payload_trajectory": 1e-4,

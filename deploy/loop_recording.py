@@ -96,7 +96,9 @@ class LoopRecording:
                 primal_payload_rms=record.primal_payload_rms,
                 primal_wrench_rms=record.primal_wrench_rms, dual_norm=record.dual_norm,
                 max_primal_payload_rms=float(np.max(record.primal_payload_rms)),
-                max_primal_wrench_rms=float(np.max(record.primal_wrench_rms))), time_s)
+                max_primal_wrench_rms=float(np.max(record.primal_wrench_rms)),
+                primal_position_rms_m=record.primal_position_rms_m,
+                primal_force_rms_n=record.primal_force_rms_n), time_s)
         h_now = inputs.safety_values().reshape(-1)
         predicted = self._predicted_min_h(time_s, plan)
         log(fmt.CBF, pb.CbfValues(update=update, time_s=time_s, pair_names=self.pair_names,

@@ -46,6 +46,10 @@ class SeriesLogger:
         self.scalar(f"{paths.ADMM}/primal_payload_rms", message.primal_payload_rms, names)
         self.scalar(f"{paths.ADMM}/primal_wrench_rms", message.primal_wrench_rms, names)
         self.scalar(f"{paths.ADMM}/dual_norm", message.dual_norm)
+        if len(message.primal_position_rms_m):  # logs before the paper's residuals lack them
+            self.scalar(f"{paths.ADMM}/primal_position_rms_m", message.primal_position_rms_m,
+                        names)
+            self.scalar(f"{paths.ADMM}/primal_force_rms_n", message.primal_force_rms_n, names)
         self.recording.disable_timeline(paths.ADMM_ITERATION)
 
     def nmpc_update(self, message: pb.NmpcUpdate, grf_n: np.ndarray | None) -> None:

@@ -17,7 +17,7 @@ from pathlib import Path
 from typing import Any, Literal
 
 import numpy as np
-from pydantic import Field, ValidationError, field_validator, model_validator
+from pydantic import BaseModel, Field, ValidationError, field_validator, model_validator
 from pydantic_core import InitErrorDetails, PydanticCustomError
 
 from core.closed_loop import Obstacle
@@ -225,23 +225,65 @@ class Scenario(StrictModel):
     def core_obstacles(self) -> list[Obstacle]:
         return [obstacle.to_obstacle() for obstacle in self.obstacles]
 
-    def mpc_settings(self, base: MpcSettings | None = None) -> MpcSettings:
+    def mpc_settings(self, base: MpcSettings | None = None, base_source: str = "--config"
+                     ) -> MpcSettings:
         """``base`` (default: the paper's) with this scenario's safety distance and ADMM
         parameters; the wrench-only mode also drops the coupling constraints and sets
-        ``admm.rho_state`` to 0 (the paper's ablation, see ``core.admm_mpc``)."""
+        ``admm.rho_state`` to 0 (the paper's ablation, see ``core.admm_mpc``).
+
+        Precedence, field by field: a value set explicitly in one place (``base``'s YAML,
+        named ``base_source`` in errors, or this scenario's file) wins over the other's
+        default; set explicitly in both to different values is a ``ConfigError`` naming both.
+        """
         base = base or MpcSettings()
         control = self.controller
-        admm = {"iterations": control.admm_iterations, "rho_state": control.rho_state,
-                "rho_wrench": control.rho_wrench}
+        admm = {
+            field: _one_value(f"admm.{field}", base.admm, field, base_source,
+                              f"controller.{spec}", control, spec, self.name)
+            for field, spec in (("iterations", "admm_iterations"), ("rho_state", "rho_state"),
+                                ("rho_wrench", "rho_wrench"))
+        }
+        distance = _one_value("safety.safety_distance_m", base.safety, "safety_distance_m",
+                              base_source, "safety_distance_m", self, "safety_distance_m",
+                              self.name)
         coupling = base.coupling
         if control.mode == "wrench-only":
+            # The scenario's own rho_state is meant for its distributed mode (``--mode``
+            # switches modes); an explicit non-zero one in ``base`` is a contradiction.
+            explicit_rho = _explicit(base.admm, "rho_state") and base.admm.rho_state != 0.0
+            explicit_coupling = _explicit(base.coupling, "enabled") and base.coupling.enabled
+            if explicit_rho or explicit_coupling:
+                what = ("coupling.enabled: true" if explicit_coupling
+                        else f"admm.rho_state = {base.admm.rho_state}")
+                raise ConfigError(f"{what} in {base_source} conflicts with controller.mode: "
+                                  f"wrench-only of scenario {self.name!r}, which sets "
+                                  "rho_state 0 and no coupling")
             admm["rho_state"] = 0.0
             coupling = coupling.model_copy(update={"enabled": False})
         return base.model_copy(update={
-            "safety": base.safety.model_copy(update={"safety_distance_m": self.safety_distance_m}),
+            "safety": base.safety.model_copy(update={"safety_distance_m": distance}),
             "admm": base.admm.model_copy(update=admm),
             "coupling": coupling,
         })
+
+
+def _explicit(model: BaseModel, field: str) -> bool:
+    return field in model.model_fields_set
+
+
+def _one_value(base_name: str, base: BaseModel, base_field: str, base_source: str,
+               scenario_name: str, scenario: BaseModel, scenario_field: str,
+               scenario_label: str) -> Any:
+    """The explicitly set one of two values (the scenario's when neither is); both explicit
+    and different is an error naming both places."""
+    base_value = getattr(base, base_field)
+    scenario_value = getattr(scenario, scenario_field)
+    in_base, in_scenario = _explicit(base, base_field), _explicit(scenario, scenario_field)
+    if in_base and in_scenario and base_value != scenario_value:
+        raise ConfigError(f"{base_name} = {base_value} in {base_source} conflicts with "
+                          f"{scenario_name} = {scenario_value} in scenario {scenario_label!r}; "
+                          "set it in one place")
+    return base_value if in_base else scenario_value
 
 
 def shipped_scenarios() -> list[str]:

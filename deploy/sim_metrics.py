@@ -42,6 +42,8 @@ class RunMetrics:
     flagged_plans: int = 0
     payload_residual: list[float] = field(default_factory=list)
     wrench_residual: list[float] = field(default_factory=list)
+    position_residual_m: list[float] = field(default_factory=list)
+    force_residual_n: list[float] = field(default_factory=list)
     wbc_tick_ms: list[float] = field(default_factory=list)
     loop_tick_ms: list[float] = field(default_factory=list)  # whole 2 ms loop ticks, wall
     estimate_position_error_m: list[float] = field(default_factory=list)
@@ -79,11 +81,14 @@ class RunMetrics:
         self.failed_solves += sum(not s.success for s in plan.solves)
         self.solve_iterations.extend(s.iterations for s in plan.solves)
         self.solve_ms.extend(1e3 * s.wall_time_s for s in plan.solves)
-        self.flagged_plans += int(not plan.success)
+        self.flagged_plans += int(plan.flagged)
         if plan.admm_iterations:
             last = plan.admm_iterations[-1]
             self.payload_residual.append(float(np.sqrt(np.mean(last.primal_payload_rms ** 2))))
             self.wrench_residual.append(float(np.sqrt(np.mean(last.primal_wrench_rms ** 2))))
+            self.position_residual_m.append(
+                float(np.sqrt(np.mean(last.primal_position_rms_m ** 2))))
+            self.force_residual_n.append(float(np.sqrt(np.mean(last.primal_force_rms_n ** 2))))
 
     def record_estimate(self, estimate: np.ndarray, position_m: np.ndarray,
                         euler_rad: np.ndarray) -> None:
@@ -130,7 +135,9 @@ class RunMetrics:
             "rms_payload_yaw_error_rad": _rms(self.yaw_error_rad),
             "max_coupling_error_m": self.max_coupling_error_m,
             "admm_residual_rms": {"payload_state": _rms(self.payload_residual),
-                                  "wrench": _rms(self.wrench_residual)},
+                                  "wrench": _rms(self.wrench_residual),
+                                  "payload_position_m": _rms(self.position_residual_m),
+                                  "force_n": _rms(self.force_residual_n)},
             "nmpc_update_ms": {"median": float(np.median(updates)),
                                "p95": float(np.percentile(updates, 95)),
                                "max": float(np.max(updates))},

@@ -224,7 +224,7 @@ class NmpcUpdate(_message.Message):
     def __init__(self, update: _Optional[int] = ..., time_s: _Optional[float] = ..., success: _Optional[bool] = ..., update_time_s: _Optional[float] = ..., deadline_missed: _Optional[bool] = ..., solves: _Optional[_Iterable[_Union[SolveStats, _Mapping]]] = ..., warnings: _Optional[_Iterable[str]] = ..., grf: _Optional[_Union[Array, _Mapping]] = ..., wrench: _Optional[_Union[Array, _Mapping]] = ..., robot_trajectories: _Optional[_Union[Array, _Mapping]] = ..., payload_trajectory: _Optional[_Union[Array, _Mapping]] = ..., grf_trajectories: _Optional[_Union[Array, _Mapping]] = ..., wrench_trajectories: _Optional[_Union[Array, _Mapping]] = ..., consensus_trajectory: _Optional[_Union[Array, _Mapping]] = ..., max_solve_time_s: _Optional[float] = ..., total_iterations: _Optional[int] = ...) -> None: ...
 
 class AdmmIteration(_message.Message):
-    __slots__ = ("update", "time_s", "iteration", "primal_payload_rms", "primal_wrench_rms", "dual_norm", "max_primal_payload_rms", "max_primal_wrench_rms")
+    __slots__ = ("update", "time_s", "iteration", "primal_payload_rms", "primal_wrench_rms", "dual_norm", "max_primal_payload_rms", "max_primal_wrench_rms", "primal_position_rms_m", "primal_force_rms_n")
     UPDATE_FIELD_NUMBER: _ClassVar[int]
     TIME_S_FIELD_NUMBER: _ClassVar[int]
     ITERATION_FIELD_NUMBER: _ClassVar[int]
@@ -233,6 +233,8 @@ class AdmmIteration(_message.Message):
     DUAL_NORM_FIELD_NUMBER: _ClassVar[int]
     MAX_PRIMAL_PAYLOAD_RMS_FIELD_NUMBER: _ClassVar[int]
     MAX_PRIMAL_WRENCH_RMS_FIELD_NUMBER: _ClassVar[int]
+    PRIMAL_POSITION_RMS_M_FIELD_NUMBER: _ClassVar[int]
+    PRIMAL_FORCE_RMS_N_FIELD_NUMBER: _ClassVar[int]
     update: int
     time_s: float
     iteration: int
@@ -241,7 +243,9 @@ class AdmmIteration(_message.Message):
     dual_norm: float
     max_primal_payload_rms: float
     max_primal_wrench_rms: float
-    def __init__(self, update: _Optional[int] = ..., time_s: _Optional[float] = ..., iteration: _Optional[int] = ..., primal_payload_rms: _Optional[_Iterable[float]] = ..., primal_wrench_rms: _Optional[_Iterable[float]] = ..., dual_norm: _Optional[float] = ..., max_primal_payload_rms: _Optional[float] = ..., max_primal_wrench_rms: _Optional[float] = ...) -> None: ...
+    primal_position_rms_m: _containers.RepeatedScalarFieldContainer[float]
+    primal_force_rms_n: _containers.RepeatedScalarFieldContainer[float]
+    def __init__(self, update: _Optional[int] = ..., time_s: _Optional[float] = ..., iteration: _Optional[int] = ..., primal_payload_rms: _Optional[_Iterable[float]] = ..., primal_wrench_rms: _Optional[_Iterable[float]] = ..., dual_norm: _Optional[float] = ..., max_primal_payload_rms: _Optional[float] = ..., max_primal_wrench_rms: _Optional[float] = ..., primal_position_rms_m: _Optional[_Iterable[float]] = ..., primal_force_rms_n: _Optional[_Iterable[float]] = ...) -> None: ...
 
 class CbfValues(_message.Message):
     __slots__ = ("update", "time_s", "pair_names", "h_m", "predicted_min_h_m", "min_h_m")

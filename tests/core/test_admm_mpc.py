@@ -53,6 +53,27 @@ def test_primal_residual_falls_with_iterations() -> None:
     assert dual[-1] < 0.01 * dual[0]
 
 
+def test_residuals_in_the_papers_units() -> None:
+    """Payload-position residual [m] and interaction-force residual [N], per agent: checked
+    against a consensus and local copies with known offsets."""
+    mpc = settings()
+    model = team()
+    controller = DistributedMpc(model, mpc)
+    n, na = mpc.horizon_steps, model.agent_count
+    size = controller.weights.size
+    primal = np.zeros((na, size))
+    payload = primal[:, : n * 12].reshape(na, n, 12)  # views
+    wrench = primal[:, n * 12 :].reshape(na, na * n, 6)
+    payload[0, :, 0] = 0.02       # agent 0: its payload copy 2 cm off in x at every stage
+    payload[0, :, 3] = 5.0        # ... and a velocity offset, which is not a position
+    wrench[1, :, 2] = 4.0         # agent 1: every force copy 4 N off in z
+    wrench[1, :, 5] = 9.0         # ... and a torque offset, which is not a force
+    record = controller._residuals(primal, np.zeros(size), [])
+    np.testing.assert_allclose(record.primal_position_rms_m, [0.02 / np.sqrt(3), 0.0])
+    np.testing.assert_allclose(record.primal_force_rms_n, [0.0, 4.0 / np.sqrt(3)])
+    assert record.primal_payload_rms[0] > 1.0  # the mixed-unit RMS includes the velocity
+
+
 @pytest.mark.slow
 def test_distributed_closed_loop_tracks_safely() -> None:
     mpc = settings()

@@ -13,7 +13,8 @@ import yaml
 
 from core.closed_loop import Obstacle
 from core.settings import MpcSettings, SafetySettings
-from deploy.config_files import ConfigError
+from deploy.cli import main
+from deploy.config_files import ConfigError, load_settings
 from deploy.scenario import (
     DEFAULT_SCENARIO,
     SCENARIO_DIR,
@@ -136,6 +137,63 @@ def test_wrench_only_mode_drops_coupling_and_state_consensus(tmp_path: Path) -> 
     assert not settings.coupling.enabled
     assert settings.admm.rho_state == 0.0
     assert settings.admm.rho_wrench == MpcSettings().admm.rho_wrench
+
+
+def test_an_explicit_config_value_beats_the_scenario_default(tmp_path: Path) -> None:
+    # The scenario file sets no ADMM field: --config's must win (it used to be dropped).
+    config = tmp_path / "mpc.yaml"
+    config.write_text(yaml.safe_dump({"admm": {"iterations": 3, "rho_wrench": 500.0},
+                                      "safety": {"safety_distance_m": 0.5}}))
+    document = base_document()
+    del document["obstacles"]
+    settings = load_scenario(write(tmp_path, document)).mpc_settings(
+        load_settings(config, MpcSettings), str(config))
+    assert (settings.admm.iterations, settings.admm.rho_wrench) == (3, 500.0)
+    assert settings.admm.rho_state == MpcSettings().admm.rho_state
+    assert settings.safety.safety_distance_m == 0.5
+    # ... and the same value given in both places is no conflict
+    document["controller"] = {"admm_iterations": 3}
+    agreed = load_scenario(write(tmp_path, document)).mpc_settings(
+        load_settings(config, MpcSettings), str(config))
+    assert agreed.admm.iterations == 3
+
+
+@pytest.mark.parametrize(("config", "scenario_field", "names"), [
+    ({"admm": {"iterations": 1}}, {"controller": {"admm_iterations": 3}},
+     ("admm.iterations = 1", "controller.admm_iterations = 3")),
+    ({"admm": {"rho_state": 2e4}}, {"controller": {"rho_state": 1e5}},
+     ("admm.rho_state = 20000.0", "controller.rho_state = 100000.0")),
+    ({"safety": {"safety_distance_m": 0.6}}, {"safety_distance_m": 0.45},
+     ("safety.safety_distance_m = 0.6", "safety_distance_m = 0.45")),
+], ids=["iterations", "rho_state", "safety_distance"])
+def test_a_conflict_between_config_and_scenario_names_both(
+        tmp_path: Path, config: dict, scenario_field: dict, names: tuple[str, str]) -> None:
+    path = tmp_path / "mpc.yaml"
+    path.write_text(yaml.safe_dump(config))
+    document = {**base_document(), **scenario_field}
+    scenario = load_scenario(write(tmp_path, document))
+    with pytest.raises(ConfigError) as error:
+        scenario.mpc_settings(load_settings(path, MpcSettings), str(path))
+    message = str(error.value)
+    assert names[0] in message and names[1] in message
+    assert str(path) in message and "'test'" in message
+
+
+def test_wrench_only_with_an_explicit_state_consensus_is_a_conflict(tmp_path: Path) -> None:
+    document = base_document()
+    document["controller"] = {"mode": "wrench-only"}
+    scenario = load_scenario(write(tmp_path, document))
+    with pytest.raises(ConfigError, match="admm.rho_state = 10.0 .*wrench-only"):
+        scenario.mpc_settings(MpcSettings.model_validate({"admm": {"rho_state": 10.0}}))
+
+
+def test_porter_sim_refuses_a_conflicting_config(
+        tmp_path: Path, capsys: pytest.CaptureFixture[str]) -> None:
+    path = tmp_path / "mpc.yaml"
+    path.write_text(yaml.safe_dump({"safety": {"safety_distance_m": 0.6}}))
+    assert main(["sim", "narrow_passage", "--config", str(path), "--no-record",
+                 "--duration", "0.1", "--quiet"]) == 2
+    assert "safety_distance_m = 0.45" in capsys.readouterr().err
 
 
 def test_payload_true_mass_and_specs() -> None:
