@@ -81,8 +81,11 @@ class DistributedMpc:
         bounds = [self.problem.decision_bounds(inputs.contacts, agent=i) for i in range(na)]
         # Everything but the consensus target is fixed during the update: build it once.
         zero_target = np.zeros(self.weights.size)
+        selections = [self.problem.select_obstacles(inputs, guesses[i], agent=i)
+                      for i in range(na)]
         parameters = [self.problem.parameter_vector(self.team, inputs, agent=i,
-                                                    consensus_target=zero_target)
+                                                    consensus_target=zero_target,
+                                                    selection=selections[i])
                       for i in range(na)]
         target_slice = self.problem.nlp.parameters.slice("consensus_target")
         if self._consensus is None:
@@ -131,6 +134,7 @@ class DistributedMpc:
         plan.solves = [stats for record in records for stats in record.solves]
         plan.success = all(stats.success for stats in plan.solves)
         plan.flag_unsafe_start(inputs.safety_values())
+        plan.flag_dropped_obstacles(selections)
         plan.update_time_s = time.perf_counter() - start
         return plan
 

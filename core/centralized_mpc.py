@@ -46,8 +46,9 @@ class CentralizedMpc:
 
     def update(self, inputs: MpcInputs) -> MpcPlan:
         start = time.perf_counter()
-        parameters = self.problem.parameter_vector(self.team, inputs)
         guess = initial_guess(self.problem, self.team, inputs, self._previous, agent=None)
+        selection = self.problem.select_obstacles(inputs, guess)
+        parameters = self.problem.parameter_vector(self.team, inputs, selection=selection)
         lower, upper = self.problem.decision_bounds(inputs.contacts)
         previous = self._previous
         lam_g, lam_x = (None, None) if previous is None else shifted_multipliers(
@@ -62,5 +63,6 @@ class CentralizedMpc:
         plan.solves = [solution.stats]
         plan.success = solution.stats.success
         plan.flag_unsafe_start(inputs.safety_values())
+        plan.flag_dropped_obstacles([selection])
         plan.update_time_s = time.perf_counter() - start
         return plan

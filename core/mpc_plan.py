@@ -7,6 +7,7 @@ from dataclasses import dataclass, field
 import numpy as np
 
 from core.nlp_solver import SolveStats
+from core.obstacle_selection import ObstacleSelection
 from core.team_model import TeamModel
 from core.transport_problem import TransportProblem
 
@@ -75,6 +76,17 @@ class MpcPlan:
             self.warnings.append(f"start inside safety margin: {who} vs obstacle {obstacle}, "
                                  f"h = {safety_values_m[body, obstacle]:.3f} m")
             self.start_inside_margin = True
+
+
+    def flag_dropped_obstacles(self, selections: list[ObstacleSelection]) -> None:
+        """Warn about obstacles left out of a problem's slots although predicted inside their
+        margin (more such obstacles than ``safety.obstacle_slots``): the plan stands, but it
+        ignores them. ``selections``: one per problem (per agent with ADMM)."""
+        for problem, selection in enumerate(selections):
+            for obstacle in selection.dropped_near:
+                self.warnings.append(
+                    f"obstacle {obstacle} left out of problem {problem}'s slots, predicted "
+                    f"h = {selection.min_h_m[obstacle]:.3f} m (raise safety.obstacle_slots)")
 
 
 def decode_plan(problem: TransportProblem, team: TeamModel, decision: np.ndarray,

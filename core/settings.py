@@ -9,7 +9,7 @@ from __future__ import annotations
 
 from typing import Literal
 
-from pydantic import BaseModel, ConfigDict, Field, field_validator
+from pydantic import BaseModel, ConfigDict, Field, field_validator, model_validator
 
 
 class StrictModel(BaseModel):
@@ -58,10 +58,21 @@ class SafetySettings(StrictModel):
     alpha1: float = Field(0.4, gt=0, le=1)
     alpha2: float = Field(0.04, gt=0, le=1)
     safety_distance_m: float = Field(0.6, gt=0)
-    max_obstacles: int = Field(8, ge=0)
+    max_obstacles: int = Field(8, ge=0)  # obstacles a scene may hold
+    # Obstacle slots of each built problem: the K obstacles nearest to its bodies over the
+    # horizon, chosen per update (core.obstacle_selection); at most max_obstacles.
+    obstacle_slots: int = Field(3, ge=0)
     # Also enforce psi1 = h_{k+1} - (1 - alpha1) h_k >= 0 at stages 1..N-1 (see
     # core.safety.stagewise_first_order): robustness to model mismatch; not in the paper.
     first_order_condition: bool = True
+
+
+    @model_validator(mode="after")
+    def _slots_within_scene(self) -> SafetySettings:
+        if self.obstacle_slots > self.max_obstacles:
+            raise ValueError(f"obstacle_slots ({self.obstacle_slots}) must be at most "
+                             f"max_obstacles ({self.max_obstacles})")
+        return self
 
 
 class ContactSettings(StrictModel):

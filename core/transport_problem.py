@@ -26,6 +26,7 @@ import numpy as np
 
 from core.coupling import acceleration_level_constraint, coupling_kinematics, yaw_torque
 from core.mpc_inputs import MpcInputs
+from core.obstacle_selection import ObstacleSelection, select_obstacles
 from core.safety import OBSTACLE_PARAMETER_SIZE, stagewise_first_order, stagewise_hocbf
 from core.settings import MpcSettings
 from core.srb_model import (
@@ -113,14 +114,37 @@ class TransportProblem:
                 upper[z_rows] = f_max * stance + SWING_FORCE_BOUND_N * (1.0 - stance)
         return lower, upper
 
+    def select_obstacles(self, inputs: MpcInputs, guess: np.ndarray | None = None,
+                         agent: int | None = None) -> ObstacleSelection:
+        """The obstacles this problem constrains at this update: the ``obstacle_slots`` with
+        the smallest predicted h over its bodies along the reference and, if given, the warm
+        start ``guess`` (``core.obstacle_selection``)."""
+        inputs.validate(self.agent_count, self.horizon_steps, self.settings.safety.max_obstacles)
+        d = self.nlp.decision
+        n = self.horizon_steps
+        paths = [np.vstack([inputs.payload_state[None, 0:2], inputs.payload_reference[:, 0:2]])]
+        if guess is not None:
+            paths.append(np.array([d.get(guess, f"payload@{k}")[0:2] for k in range(n + 1)]))
+        for key, r in zip(self.robot_keys(), self.robot_indices(agent), strict=True):
+            paths.append(np.vstack([inputs.robot_states[r][None, 0:2],
+                                    inputs.robot_references[r][:, 0:2]]))
+            if guess is not None:
+                paths.append(np.array([d.get(guess, f"robot_{key}@{k}")[0:2]
+                                       for k in range(n + 1)]))
+        return select_obstacles(np.array(paths), inputs.obstacles,
+                                self.settings.safety.obstacle_slots,
+                                self.settings.sample_period_s)
+
     def parameter_vector(
         self,
         team: TeamModel,
         inputs: MpcInputs,
         agent: int | None = None,
         consensus_target: np.ndarray | None = None,
+        selection: ObstacleSelection | None = None,
     ) -> np.ndarray:
-        """Numeric parameter vector for ``inputs`` (validated first)."""
+        """Numeric parameter vector for ``inputs`` (validated first). ``selection``: the
+        obstacles in the slots (default: chosen along the reference alone)."""
         if team.agent_count != self.agent_count:
             raise ValueError(f"team has {team.agent_count} agents, problem {self.agent_count}")
         inputs.validate(self.agent_count, self.horizon_steps, self.settings.safety.max_obstacles)
@@ -141,8 +165,10 @@ class TransportProblem:
         ]))
         layout.put(values, "x0_payload", inputs.payload_state)
         layout.put(values, "ref_payload", inputs.payload_reference)
-        layout.put(values, "obstacles",
-                   inputs.obstacle_parameters(self.settings.safety.max_obstacles))
+        slots = self.settings.safety.obstacle_slots
+        if selection is None:
+            selection = self.select_obstacles(inputs, None, agent)
+        layout.put(values, "obstacles", selection.parameters(inputs.obstacles, slots))
         if self.local:
             layout.put(values, "self_selector", np.eye(self.agent_count)[self._agent(agent)])
             if consensus_target is None:
@@ -195,8 +221,8 @@ def build_transport_problem(
     ref_robot = {key: b.parameter(f"ref_{key}", STATE_SIZE * n) for key in keys}
     ref_payload = b.parameter("ref_payload", STATE_SIZE * n)
     feet = {key: b.parameter(f"feet_{key}", 12 * n) for key in keys}
-    max_obstacles = settings.safety.max_obstacles
-    obstacles = b.parameter("obstacles", OBSTACLE_PARAMETER_SIZE * max_obstacles)
+    slots = settings.safety.obstacle_slots
+    obstacles = b.parameter("obstacles", OBSTACLE_PARAMETER_SIZE * slots)
     selector = b.parameter("self_selector", na) if local else None
 
     payload_mass, payload_inertia = model_payload[0], inertia_matrix(model_payload[1:7])
@@ -253,20 +279,20 @@ def build_transport_problem(
         if coupling.yaw_torque == "constrain":
             for j in range(na):
                 b.path(k, f"yaw_torque_{j}", yaw_torque(x_payload[k], wrench[j][k]), 0.0, 0.0)
-        if k >= 1 and max_obstacles > 0:
+        if k >= 1 and slots > 0:
             size = OBSTACLE_PARAMETER_SIZE
             barriers = [
                 stagewise_hocbf(x, a, obstacles[size * o : size * (o + 1)], k, ts,
                                 safety.alpha1, safety.alpha2)
                 for x, a in bodies
-                for o in range(max_obstacles)
+                for o in range(slots)
             ]
             if safety.first_order_condition:
                 barriers += [
                     stagewise_first_order(x, a, obstacles[size * o : size * (o + 1)], k, ts,
                                           safety.alpha1)
                     for x, a in bodies
-                    for o in range(max_obstacles)
+                    for o in range(slots)
                 ]
             b.path(k, "barriers", ca.vertcat(*barriers), 0.0, np.inf)
 
