@@ -76,6 +76,7 @@ class DistributedMpc:
         start = time.perf_counter()
         na = self.team.agent_count
         iterations = iterations or self.settings.admm.iterations
+        inputs.validate(na, self.settings.horizon_steps, self.settings.safety.max_obstacles)
         guesses = [initial_guess(self.problem, self.team, inputs, self._previous[i], agent=i)
                    for i in range(na)]
         bounds = [self.problem.decision_bounds(inputs.contacts, agent=i) for i in range(na)]
@@ -140,21 +141,22 @@ class DistributedMpc:
 
     def _plan(self, inputs: MpcInputs, solutions: list[NlpSolution], consensus: np.ndarray
               ) -> MpcPlan:
-        """Each robot's own trajectory and first wrench from its local solution; the payload and
-        wrench predictions from the consensus trajectory."""
+        """One wrench source per robot, its own local solution: robot i's trajectory, GRFs and
+        wrench trajectory all come from local problem i, where they satisfy robot i's dynamics
+        together (the consensus wrench does not, by the consensus gap). The payload prediction
+        is the consensus trajectory, which is also kept whole (``consensus_trajectory``)."""
         n = self.settings.horizon_steps
-        na = self.team.agent_count
         plan = decode_plan(self.problem, self.team, solutions[0].decision, agent=0)
-        for i in range(1, na):
+        for i in range(1, self.team.agent_count):
             own = decode_plan(self.problem, self.team, solutions[i].decision, agent=i)
             plan.robot_trajectories[i] = own.robot_trajectories[i]
             plan.grf_trajectories[i] = own.grf_trajectories[i]
             plan.grf[i] = own.grf[i]
             plan.wrench[i] = own.wrench[i]
+            plan.wrench_trajectories[i] = own.wrench_trajectories[i]
         plan.payload_trajectory = np.vstack([
             inputs.payload_state, consensus[: self._payload_size].reshape(n, STATE_SIZE)
         ])
-        plan.wrench_trajectories = consensus[self._payload_size :].reshape(na, n, WRENCH_SIZE)
         plan.consensus_trajectory = consensus
         return plan
 

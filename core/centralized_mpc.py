@@ -46,6 +46,8 @@ class CentralizedMpc:
 
     def update(self, inputs: MpcInputs) -> MpcPlan:
         start = time.perf_counter()
+        inputs.validate(self.team.agent_count, self.settings.horizon_steps,
+                        self.settings.safety.max_obstacles)
         guess = initial_guess(self.problem, self.team, inputs, self._previous, agent=None)
         selection = self.problem.select_obstacles(inputs, guess)
         parameters = self.problem.parameter_vector(self.team, inputs, selection=selection)

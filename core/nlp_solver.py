@@ -45,6 +45,7 @@ class SolveStats:
     wall_time_s: float
     objective: float
     constraint_violation: float
+    cpu_time_s: float = 0.0  # CPU time of the solving process (user + system) during the solve
 
 
 @dataclass
@@ -162,7 +163,8 @@ class NlpSolver:
                                  upper_bounds, None, None)
         stats = dataclasses.replace(
             retry.stats, iterations=retry.stats.iterations + solution.stats.iterations,
-            wall_time_s=retry.stats.wall_time_s + solution.stats.wall_time_s)
+            wall_time_s=retry.stats.wall_time_s + solution.stats.wall_time_s,
+            cpu_time_s=retry.stats.cpu_time_s + solution.stats.cpu_time_s)
         return NlpSolution(retry.decision, retry.constraint_multipliers,
                            retry.bound_multipliers, stats)
 
@@ -184,16 +186,18 @@ class NlpSolver:
             args["lam_g0"] = constraint_multipliers
             if bound_multipliers is not None:
                 args["lam_x0"] = bound_multipliers
-        start = time.perf_counter()
+        start, cpu_start = time.perf_counter(), time.process_time()
         try:
             result = solver(**args)
             failure = None
         except RuntimeError as error:  # evaluation errors (e.g. NaN) surface here
             result, failure = None, str(error).splitlines()[-1][:200]
         wall = time.perf_counter() - start
+        cpu = time.process_time() - cpu_start
         if result is None:
             n, m = self.problem.variable_count, self._lbg.size
-            stats = SolveStats(f"error: {failure}", False, 0, wall, float("nan"), float("inf"))
+            stats = SolveStats(f"error: {failure}", False, 0, wall, float("nan"), float("inf"),
+                               cpu)
             return NlpSolution(np.array(initial_guess, float), np.zeros(m), np.zeros(n), stats)
         x = np.asarray(result["x"]).ravel()
         g = np.asarray(result["g"]).ravel()
@@ -213,6 +217,7 @@ class NlpSolver:
             wall_time_s=wall,
             objective=objective,
             constraint_violation=violation if finite else float("inf"),
+            cpu_time_s=cpu,
         )
         return NlpSolution(
             x, np.asarray(result["lam_g"]).ravel(), np.asarray(result["lam_x"]).ravel(), stats

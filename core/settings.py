@@ -67,6 +67,15 @@ class SafetySettings(StrictModel):
     first_order_condition: bool = True
 
 
+    @model_validator(mode="before")
+    @classmethod
+    def _default_slots_within_scene(cls, data: object) -> object:
+        # The default K never conflicts with an explicit, smaller max_obstacles.
+        if isinstance(data, dict) and "obstacle_slots" not in data and "max_obstacles" in data:
+            default = cls.model_fields["obstacle_slots"].default
+            return {**data, "obstacle_slots": min(default, data["max_obstacles"])}
+        return data
+
     @model_validator(mode="after")
     def _slots_within_scene(self) -> SafetySettings:
         if self.obstacle_slots > self.max_obstacles:

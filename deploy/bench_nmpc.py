@@ -9,6 +9,7 @@ drives the SRB plant through the standard scenario (0.3 m/s past CBF-active obst
 from __future__ import annotations
 
 import json
+import time
 from dataclasses import dataclass
 from pathlib import Path
 
@@ -68,18 +69,27 @@ def accuracy_check(team, settings: MpcSettings, inputs_samples: list, cache
 
 
 class _SampleRecorder:
-    """Wraps ``update`` and keeps every 20th decision's inputs (at most 10)."""
+    """Wraps ``update``: keeps every 20th decision's inputs (at most 10) and each update's CPU
+    time [s], this process's plus, with worker processes (``workers``), their solves'."""
 
-    def __init__(self, update) -> None:
+    def __init__(self, update, workers: bool) -> None:
         self.update = update
+        self.workers = workers
         self.samples: list = []
+        self.cpu_s: list[float] = []
         self.seen = 0
 
     def __call__(self, inputs):
         if self.seen % 20 == 0 and len(self.samples) < 10:
             self.samples.append(inputs)
         self.seen += 1
-        return self.update(inputs)
+        start = time.process_time()
+        plan = self.update(inputs)
+        cpu = time.process_time() - start
+        if self.workers:
+            cpu += sum(s.cpu_time_s for s in plan.solves)
+        self.cpu_s.append(cpu)
+        return plan
 
 
 @dataclass
@@ -90,6 +100,7 @@ class BenchRow:
     variables: int
     iterations_mean: float
     update_ms: dict[str, float]
+    cpu_ms: dict[str, float]  # CPU per update, summed over the processes that worked on it
     local_ms: dict[str, float] | None
     success_rate: float
     min_h_m: float
@@ -107,12 +118,12 @@ def _summary(values_s: list[float]) -> dict[str, float]:
             "p95": float(np.percentile(ms, 95))}
 
 
-def _row(mode: str, agents: int, solver: str, variables: int, result: ClosedLoopResult
-         ) -> BenchRow:
+def _row(mode: str, agents: int, solver: str, variables: int, result: ClosedLoopResult,
+         cpu_s: list[float]) -> BenchRow:
     local = _summary(result.local_solve_time_s) if mode == "distributed" else None
     return BenchRow(mode, agents, solver, variables, float(np.mean(result.iterations[1:])),
-                    _summary(result.update_time_s), local, float(np.mean(result.success)),
-                    float(np.min(result.min_h_m)))
+                    _summary(result.update_time_s), _summary(cpu_s), local,
+                    float(np.mean(result.success)), float(np.min(result.min_h_m)))
 
 
 def run_bench(agent_counts: list[int], solver: str, duration_s: float, parallel: bool,
@@ -142,7 +153,8 @@ def run_bench(agent_counts: list[int], solver: str, duration_s: float, parallel:
                 executor = ProcessExecutor(spec) if parallel else SerialExecutor(spec)
                 controller = DistributedMpc(team, settings, executor=executor)
                 variables = controller.problem.nlp.variable_count
-            recorder = _SampleRecorder(controller.update)
+            recorder = _SampleRecorder(controller.update,
+                                       workers=mode == "distributed" and parallel)
             controller.update = recorder  # type: ignore[method-assign]
             try:
                 result = run_closed_loop(controller, team, team, settings, scenario.reference,
@@ -152,7 +164,7 @@ def run_bench(agent_counts: list[int], solver: str, duration_s: float, parallel:
                     controller.close()
             if mode == "distributed" and name != "ipopt-reference" and include_reference:
                 checks.append(accuracy_check(team, settings, recorder.samples, cache))
-            row = _row(mode, agents, name, variables, result)
+            row = _row(mode, agents, name, variables, result, recorder.cpu_s)
             log(f"    median update {row.update_ms['median']:.2f} ms, "
                 f"success {row.success_rate:.0%}, min h {row.min_h_m:.3f} m")
             rows.append(row)
@@ -162,8 +174,8 @@ def run_bench(agent_counts: list[int], solver: str, duration_s: float, parallel:
 def format_table(rows: list[BenchRow]) -> str:
     """Table I layout plus local NLP time and the ratios measured in this run."""
     header = (f"{'n_A':>3} {'mode':<12} {'solver':<16} {'vars':>5} {'iters':>6} "
-              f"{'upd mean':>9} {'std':>6} {'median':>7} {'p95':>7} {'local med':>9} "
-              f"{'dist/cent':>9} {'ref/this':>8}")
+              f"{'upd mean':>9} {'std':>6} {'median':>7} {'p95':>7} {'cpu med':>7} "
+              f"{'local med':>9} {'dist/cent':>9} {'ref/this':>8}")
     lines = [header, "-" * len(header)]
     for row in rows:
         cent = next((r for r in rows if r.agents == row.agents and r.mode == "centralized"
@@ -178,9 +190,11 @@ def format_table(rows: list[BenchRow]) -> str:
         u = row.update_ms
         lines.append(f"{row.agents:>3} {row.mode:<12} {row.solver:<16} {row.variables:>5} "
                      f"{row.iterations_mean:>6.1f} {u['mean']:>9.2f} {u['std']:>6.2f} "
-                     f"{u['median']:>7.2f} {u['p95']:>7.2f} {local:>9} {ratio:>9} {speedup:>8}")
-    lines.append("times in ms; 'ref/this' = ipopt-reference local NLP median / this local NLP "
-                 "median; 'dist/cent' = mean update-time ratio")
+                     f"{u['median']:>7.2f} {u['p95']:>7.2f} {row.cpu_ms['median']:>7.2f} "
+                     f"{local:>9} {ratio:>9} {speedup:>8}")
+    lines.append("times in ms; 'cpu med' = median CPU time per update summed over the processes "
+                 "(ADMM workers included); 'ref/this' = ipopt-reference local NLP median / this "
+                 "local NLP median; 'dist/cent' = mean update-time ratio")
     return "\n".join(lines)
 
 

@@ -3,8 +3,9 @@
 For each log: rebuild the controller from the log's attached scenario and effective NMPC
 settings (or ``--settings``), then for every decision in order restore the warm-start keyframe
 when one was logged for it, feed the logged ``MpcInputs`` and compare the outputs with the
-logged ones: first-stage GRFs and wrenches, predicted payload and robot trajectories and
-wrenches (with ADMM: the consensus), ADMM residuals per iteration, and every solve's status.
+logged ones: first-stage GRFs and wrenches, predicted payload (with ADMM: the consensus) and
+robot trajectories and wrenches (with ADMM: each robot's own local solution), ADMM residuals
+per iteration, and every solve's status.
 Between keyframes the warm start is the replayed previous decision, which is exact as long as
 the replay is. Then the log's summary metrics are checked against the expectations stored next to it
 (``LOG.expect.json``). Exit code 1 when anything is outside its tolerance.

@@ -5,8 +5,9 @@ pick-up of finished plans, their recording, and NMPC health for the safety super
 thread idle it builds the decision from the tick's measurements and MoCap frame and submits it;
 the instants stay on the ``1 / nmpc_hz`` grid: an update that overruns skips the instants it
 covered (the next one starts at the first grid instant after it finished, no back-to-back
-burst). A finished update's plan becomes the active one with stage 0 at its decision time, so
-the WBC interpolates past the time the update took. ``step`` returns (solver failed, deadline
+burst). The decision is planned for the instant its plan will take effect (the state predicted
+over the recent median update time, ``core.delay_compensation``), and a finished update's plan
+becomes the active one with stage 0 at that instant. ``step`` returns (solver failed, deadline
 missed) on ticks where an update finished, for ``SafetyInputs`` (a plan flagged only for
 starting inside a safety margin is no solver failure); the deadline is one NMPC
 period of the loop's clock. On each new plan the coupling F/T readings are logged against the
@@ -67,8 +68,10 @@ class NmpcSchedule:
             flags = self._apply(t, result)
         if (t >= self.next_s and not self.thread.busy and frame is not None
                 and all(name in measurements and name in frame.poses for name in self.names)):
+            active = None if self.plan is None else (self.plan, self.plan_start_s)
             decision = self.control.nmpc_inputs(t, [measurements[n] for n in self.names], frame,
-                                                self.obstacles(t, frame))
+                                                self.obstacles(t, frame),
+                                                delay_s=self.compensation_s(), active=active)
             if self.recording is not None:
                 self.recording.nmpc_inputs(t, self.updates, decision.inputs,
                                            self.control.controller.memory())
@@ -78,6 +81,15 @@ class NmpcSchedule:
             while self.next_s <= t:
                 self.next_s += self.period_s
         return flags
+
+    def compensation_s(self) -> float:
+        """The delay the next plan is planned for (``controller.delay_compensation_s``): the
+        setting, or the median update time of the last 10 updates (0 before the first)."""
+        setting = self.control.scenario.controller.delay_compensation_s
+        if setting != "measured":
+            return float(setting)
+        recent = self.stats.busy_s[-10:]
+        return float(np.median(recent)) if recent else 0.0
 
     def obstacles(self, t: float, frame: MocapFrame) -> list[Obstacle]:
         """The scenario's obstacles, at their MoCap position where the config names a body

@@ -121,6 +121,17 @@ class ControllerSpec(StrictModel):
     executor: Literal["process", "serial"] = "process"
     # Simulation only: a plan takes effect when its computation would have finished.
     model_computation_delay: bool = False
+    # Plan from the state predicted to the instant the plan takes effect
+    # (core.delay_compensation): "measured" uses the median of the last updates' delays
+    # (0 in lockstep without model_computation_delay), a number fixes it [s], 0 turns it off.
+    delay_compensation_s: Literal["measured"] | float = Field("measured")
+
+    @field_validator("delay_compensation_s")
+    @classmethod
+    def _finite_delay(cls, value: str | float) -> str | float:
+        if not isinstance(value, str) and not 0.0 <= value <= 0.5:
+            raise ValueError(f"must be 'measured' or a delay in [0, 0.5] s, got {value}")
+        return value
 
 
 class GaitSpec(StrictModel):

@@ -55,6 +55,7 @@ class RunMetrics:
     duration_s: float = 0.0
     wall_s: float = 0.0
     final_payload_xy_m: np.ndarray | None = None
+    plans_applied: int = 0  # NMPC plans that took effect (all of them without a delay)
     stopped_early: bool = False  # a stop was requested (Ctrl-C, SIGTERM) before the end
 
     def record_ground_truth(self, time_s: float, payload_xy_m: np.ndarray, payload_yaw_rad: float,
@@ -124,6 +125,7 @@ class RunMetrics:
             "backend": "mujoco",
             "duration_s": round(self.duration_s, 6),
             "stopped_early": self.stopped_early,
+            "nmpc_plans_applied": self.plans_applied,
             "falls": len(self.fallen),
             "fallen_robots": sorted(self.fallen),
             "reached_goal": reached,

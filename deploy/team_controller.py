@@ -24,6 +24,7 @@ from core.admm_executor import LocalSolverSpec
 from core.admm_mpc import DistributedMpc
 from core.centralized_mpc import CentralizedMpc
 from core.closed_loop import Obstacle
+from core.delay_compensation import predict_states
 from core.gait import TrotGait
 from core.mpc_inputs import MpcInputs
 from core.mpc_plan import MpcPlan
@@ -163,10 +164,14 @@ class TeamController:
 
     # --- NMPC ----------------------------------------------------------------------------
     def nmpc_inputs(self, t: float, measurements: list[RobotMeasurement], frame: MocapFrame,
-                    obstacles: list[Obstacle] | None = None) -> NmpcDecision:
-        """The NMPC's inputs at ``t`` from ``frame`` (robot poses) and the robots' own
-        measurements; ``obstacles`` (default: the scenario's) are evaluated at ``t - start_s``.
-        Updates the payload estimate."""
+                    obstacles: list[Obstacle] | None = None, delay_s: float = 0.0,
+                    active: tuple[MpcPlan, float] | None = None) -> NmpcDecision:
+        """The NMPC's inputs from ``frame`` (robot poses) and the robots' own measurements at
+        ``t``, for a plan that takes effect at ``t + delay_s``: with ``delay_s`` > 0 and an
+        ``active`` (plan, its stage-0 time), the measured states are predicted to that instant
+        (``core.delay_compensation``) and references, gait and obstacles (default: the
+        scenario's) are taken there; the decision's ``time_s`` is ``t + delay_s``. Updates
+        the payload estimate (from the measurement)."""
         settings = self.settings
         n, ts = settings.horizon_steps, settings.sample_period_s
         robot_states = np.array([
@@ -174,6 +179,13 @@ class TeamController:
             for robot, m in zip(self.robots, measurements, strict=True)])
         payload = self.estimator.estimate(robot_states, self.payload_estimate)
         self.payload_estimate = payload
+        if delay_s > 0.0 and active is not None:
+            plan, plan_start_s = active
+            robot_states, payload = predict_states(plan, t - plan_start_s, delay_s,
+                                                   robot_states, payload, ts)
+        else:
+            delay_s = 0.0
+        t = t + delay_s
         robot_refs, payload_ref = horizon_references(self.team, self.reference,
                                                      self.reference_time(t), n, ts)
         if t - self.start_s < SETTLE_S:  # hold the start pose while settling
@@ -197,7 +209,7 @@ class TeamController:
                                  ).reshape(-1, 5)
         inputs = MpcInputs(robot_states, payload, robot_refs, payload_ref, np.array(feet),
                            np.array(contacts), obstacle_rows)
-        return NmpcDecision(t, inputs, frame, payload)
+        return NmpcDecision(t, inputs, frame, self.payload_estimate)
 
     def update(self, decision: NmpcDecision) -> MpcPlan:
         """Run the NMPC on ``decision``'s inputs (the slow part: may run in another thread)."""

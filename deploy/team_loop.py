@@ -10,8 +10,11 @@ from *measured* data -- robot poses from MoCap, velocities from the robots' own 
 estimates, the payload state from ``PayloadEstimator`` -- and the controller plans; then each
 robot's WBC tracks the active plan. With ``controller.model_computation_delay`` a new plan
 becomes active only after its measured update time has passed in simulated time (the old one
-is used meanwhile), as on robots. The control logic itself (NMPC inputs, WBC ticks) is
-``deploy.team_controller``'s, shared with ``porter deploy``.
+is used meanwhile), and no update starts while one is computing (the instants it covered are
+skipped), as on robots; the NMPC then plans from the state predicted to the instant its plan
+takes effect (``controller.delay_compensation_s``, ``core.delay_compensation``). The control
+logic itself (NMPC inputs, WBC ticks) is ``deploy.team_controller``'s, shared with
+``porter deploy``.
 """
 
 from __future__ import annotations
@@ -121,9 +124,11 @@ class TeamLoop:
         delay = self.scenario.controller.model_computation_delay
         self.control.reset([r.driver.read() for r in self.robots])
         plan: MpcPlan | None = None
-        pending: tuple[float, MpcPlan] | None = None
+        # (takes effect at, plan, its stage-0 time, decision time)
+        pending: tuple[float, MpcPlan, float, float] | None = None
         plan_start_s = 0.0
         next_update = 0
+        delays_s: list[float] = []  # from each applied plan's decision to its taking effect
         recording = self.recording
         if recording is not None:
             recording.start(sim.time_s, f"start: scenario {self.scenario.name}, "
@@ -149,16 +154,25 @@ class TeamLoop:
                                     f"{push.duration_s} s")
             measurements = [r.driver.read() for r in self.robots]
             applied = False  # a new plan takes effect this tick
-            if t >= next_update * ts - 1e-9:
-                new_plan = self._nmpc_update(t, measurements)
-                next_update += 1
+            # One NMPC at a time, as on the robots: with the computation delay modelled, no
+            # update starts while the previous one is still computing; the instants it covered
+            # are skipped (the next one is the first grid instant after it took effect).
+            if t >= next_update * ts - 1e-9 and pending is None:
+                compensation = self._compensation_s(delays_s) if delay else 0.0
+                active = None if plan is None else (plan, plan_start_s)
+                new_plan, stage0_s = self._nmpc_update(t, measurements, compensation, active)
+                next_update = int(np.floor(t / ts + 1e-6)) + 1
                 if delay and plan is not None:
-                    pending = (t + new_plan.update_time_s, new_plan)
+                    pending = (t + new_plan.update_time_s, new_plan, stage0_s, t)
                 else:
-                    plan, plan_start_s, applied = new_plan, t, True
+                    plan, plan_start_s, applied = new_plan, stage0_s, True
             if pending is not None and t >= pending[0]:
-                plan, plan_start_s = pending[1], pending[0] - pending[1].update_time_s
+                delays_s.append(t - pending[3])
+                next_update = max(next_update, int(np.floor(t / ts + 1e-6)) + 1)
+                plan, plan_start_s = pending[1], pending[2]
                 pending, applied = None, True
+            if applied:
+                self.metrics.plans_applied += 1
             assert plan is not None
             self._wbc_tick(t, plan, plan_start_s, measurements)
             sim.step(WBC_DECIMATION)
@@ -182,10 +196,22 @@ class TeamLoop:
                             f"falls {summary['falls']}")
         return summary
 
-    def _nmpc_update(self, t: float, measurements: list[RobotMeasurement]) -> MpcPlan:
+    def _compensation_s(self, delays_s: list[float]) -> float:
+        """The delay the next plan is planned for: the setting, or the median of the last 10
+        measured delays (0 before the first)."""
+        setting = self.scenario.controller.delay_compensation_s
+        if setting != "measured":
+            return float(setting)
+        return float(np.median(delays_s[-10:])) if delays_s else 0.0
+
+    def _nmpc_update(self, t: float, measurements: list[RobotMeasurement], delay_s: float,
+                     active: tuple[MpcPlan, float] | None) -> tuple[MpcPlan, float]:
+        """One NMPC update from the measurements at ``t`` for a plan taking effect at
+        ``t + delay_s``; returns the plan and its stage-0 time."""
         frame = self.mocap.latest()
         assert frame is not None
-        decision = self.control.nmpc_inputs(t, measurements, frame)
+        decision = self.control.nmpc_inputs(t, measurements, frame, delay_s=delay_s,
+                                            active=active)
         true_position, true_quaternion = self.simulation.payload_pose()
         self.metrics.record_estimate(decision.payload_estimate, true_position,
                                      euler_from_rotation(rotation_from_quaternion_wxyz(true_quaternion)))
@@ -199,7 +225,7 @@ class TeamLoop:
             self.recording.nmpc_update(t, update, decision.inputs, plan, frame,
                                        decision.payload_estimate,
                                        (true_position, true_quaternion))
-        return plan
+        return plan, decision.time_s
 
     def _wbc_tick(self, t: float, plan: MpcPlan, plan_start_s: float,
                   measurements: list[RobotMeasurement]) -> None:

@@ -53,6 +53,23 @@ def test_primal_residual_falls_with_iterations() -> None:
     assert dual[-1] < 0.01 * dual[0]
 
 
+def test_each_robot_plan_has_one_wrench_source() -> None:
+    """Robot i's GRFs, trajectory and wrench all come from local problem i (where they satisfy
+    its dynamics together); the consensus stays available beside them."""
+    mpc = settings()
+    model = team()
+    controller = DistributedMpc(model, mpc)
+    plan = controller.update(inputs_at_start(model, mpc))
+    layout = controller.problem.nlp.decision
+    for i, local in enumerate(controller.memory().previous):
+        assert local is not None
+        own = [layout.get(local.decision, f"wrench_{i}@{k}") for k in range(mpc.horizon_steps)]
+        np.testing.assert_array_equal(plan.wrench_trajectories[i], own)
+        np.testing.assert_array_equal(plan.wrench[i], plan.wrench_trajectories[i, 0])
+        np.testing.assert_array_equal(plan.grf[i], layout.get(local.decision, "grf_self@0"))
+    assert plan.consensus_trajectory is not None
+
+
 def test_residuals_in_the_papers_units() -> None:
     """Payload-position residual [m] and interaction-force residual [N], per agent: checked
     against a consensus and local copies with known offsets."""

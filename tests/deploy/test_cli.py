@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import json
+import os
 from pathlib import Path
 
 import pytest
@@ -16,7 +17,7 @@ def test_bench_nmpc_writes_table_and_json(tmp_path: Path, capsys: pytest.Capture
                  "--interpreted", "--json", str(out)])
     assert code == 0
     printed = capsys.readouterr().out
-    assert "dist/cent" in printed and "ipopt-reference" in printed
+    assert "dist/cent" in printed and "ipopt-reference" in printed and "cpu med" in printed
     figures = json.loads(out.read_text())
     rows = figures["rows"]
     (check,) = figures["accuracy"]
@@ -29,6 +30,9 @@ def test_bench_nmpc_writes_table_and_json(tmp_path: Path, capsys: pytest.Capture
         assert row["variables"] == (612 if row["mode"] == "centralized" else 408)
         assert set(row["update_ms"]) == {"mean", "std", "median", "p95"}
         assert row["update_ms"]["median"] > 0
+        # serial: the CPU of an update is this process's, at most its wall time per core
+        cores = os.cpu_count() or 1
+        assert 0 < row["cpu_ms"]["median"] <= cores * row["update_ms"]["median"] + 0.5
         assert ("local_ms" in row) == (row["mode"] == "distributed")
         assert row["iterations_mean"] > 0
 
@@ -67,7 +71,8 @@ def test_sim_runs_the_default_scenario_on_mujoco(tmp_path: Path,
     assert summary["scenario"] == "two_go2" and summary["backend"] == "mujoco"
     assert summary["duration_s"] == pytest.approx(0.5)
     assert summary["falls"] == 0
-    assert set(summary["admm_residual_rms"]) == {"payload_state", "wrench"}
+    assert set(summary["admm_residual_rms"]) == {"payload_state", "wrench", "payload_position_m",
+                                                 "force_n"}
     assert set(summary["nmpc_update_ms"]) == {"median", "p95", "max"}
     assert set(summary["wbc_tick_ms"]) == {"median", "p95"}
     assert summary["nmpc_update_ms"]["median"] > 0 and summary["wbc_tick_ms"]["median"] > 0
