@@ -119,8 +119,10 @@ class ControllerSpec(StrictModel):
     rho_state: float = Field(1e4, ge=0)
     rho_wrench: float = Field(1e3, gt=0)
     executor: Literal["process", "serial"] = "process"
-    # Simulation only: a plan takes effect when its computation would have finished.
+    # Simulation only: a plan takes effect when its computation would have finished: after
+    # its measured update time, or after ``computation_delay_s`` when set (deterministic).
     model_computation_delay: bool = False
+    computation_delay_s: float | None = Field(None, ge=0.0, le=0.5)
     # Plan from the state predicted to the instant the plan takes effect
     # (core.delay_compensation): "measured" uses the median of the last updates' delays
     # (0 in lockstep without model_computation_delay), a number fixes it [s], 0 turns it off.

@@ -163,7 +163,9 @@ class TeamLoop:
                 new_plan, stage0_s = self._nmpc_update(t, measurements, compensation, active)
                 next_update = int(np.floor(t / ts + 1e-6)) + 1
                 if delay and plan is not None:
-                    pending = (t + new_plan.update_time_s, new_plan, stage0_s, t)
+                    fixed = self.scenario.controller.computation_delay_s
+                    took_s = new_plan.update_time_s if fixed is None else fixed
+                    pending = (t + took_s, new_plan, stage0_s, t)
                 else:
                     plan, plan_start_s, applied = new_plan, stage0_s, True
             if pending is not None and t >= pending[0]:
