@@ -71,7 +71,8 @@ class NmpcSchedule:
             active = None if self.plan is None else (self.plan, self.plan_start_s)
             decision = self.control.nmpc_inputs(t, [measurements[n] for n in self.names], frame,
                                                 self.obstacles(t, frame),
-                                                delay_s=self.compensation_s(), active=active)
+                                                delay_s=self.control.compensation_s(self.stats.busy_s),
+                                                active=active)
             if self.recording is not None:
                 self.recording.nmpc_inputs(t, self.updates, decision.inputs,
                                            self.control.controller.memory())
@@ -81,15 +82,6 @@ class NmpcSchedule:
             while self.next_s <= t:
                 self.next_s += self.period_s
         return flags
-
-    def compensation_s(self) -> float:
-        """The delay the next plan is planned for (``controller.delay_compensation_s``): the
-        setting, or the median update time of the last 10 updates (0 before the first)."""
-        setting = self.control.scenario.controller.delay_compensation_s
-        if setting != "measured":
-            return float(setting)
-        recent = self.stats.busy_s[-10:]
-        return float(np.median(recent)) if recent else 0.0
 
     def obstacles(self, t: float, frame: MocapFrame) -> list[Obstacle]:
         """The scenario's obstacles, at their MoCap position where the config names a body

@@ -211,6 +211,15 @@ class TeamController:
                            np.array(contacts), obstacle_rows)
         return NmpcDecision(t, inputs, frame, self.payload_estimate)
 
+    def compensation_s(self, recent_delays_s: list[float]) -> float:
+        """The delay the next plan is planned for (``controller.delay_compensation_s``): the
+        setting, or the median of the last 10 measured delays (0 before the first)."""
+        setting = self.scenario.controller.delay_compensation_s
+        if setting != "measured":
+            return float(setting)
+        recent = recent_delays_s[-10:]
+        return float(np.median(recent)) if recent else 0.0
+
     def update(self, decision: NmpcDecision) -> MpcPlan:
         """Run the NMPC on ``decision``'s inputs (the slow part: may run in another thread)."""
         return self.controller.update(decision.inputs)

@@ -158,7 +158,7 @@ class TeamLoop:
             # update starts while the previous one is still computing; the instants it covered
             # are skipped (the next one is the first grid instant after it took effect).
             if t >= next_update * ts - 1e-9 and pending is None:
-                compensation = self._compensation_s(delays_s) if delay else 0.0
+                compensation = self.control.compensation_s(delays_s) if delay else 0.0
                 active = None if plan is None else (plan, plan_start_s)
                 new_plan, stage0_s = self._nmpc_update(t, measurements, compensation, active)
                 next_update = int(np.floor(t / ts + 1e-6)) + 1
@@ -197,14 +197,6 @@ class TeamLoop:
             recording.event(sim.time_s, f"end: reached goal {summary['reached_goal']}, "
                             f"falls {summary['falls']}")
         return summary
-
-    def _compensation_s(self, delays_s: list[float]) -> float:
-        """The delay the next plan is planned for: the setting, or the median of the last 10
-        measured delays (0 before the first)."""
-        setting = self.scenario.controller.delay_compensation_s
-        if setting != "measured":
-            return float(setting)
-        return float(np.median(delays_s[-10:])) if delays_s else 0.0
 
     def _nmpc_update(self, t: float, measurements: list[RobotMeasurement], delay_s: float,
                      active: tuple[MpcPlan, float] | None) -> tuple[MpcPlan, float]:
