@@ -1,0 +1,1 @@
+"""porter's jobs: the control loop, safety, recording, viewing, the simulated world, benches, CLI."""

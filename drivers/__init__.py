@@ -1,0 +1,1 @@
+"""Everything that touches the world: driver interfaces, robot descriptions and the links."""

@@ -1,9 +1,9 @@
 """The small driver interface the control loop talks to, in simulation and on robots alike.
 
 World frame (z up), SI units. Quaternions are (w, x, y, z) and rotate body vectors into the
-world frame. Per-joint arrays have 12 entries in ``drivers.mujoco_scene.LEG_JOINT_NAMES``
+world frame. Per-joint arrays have 12 entries in ``core.model.conventions.LEG_JOINT_NAMES``
 order, FL, FR, RL, RR x (hip, thigh, calf); per-foot arrays have 4 entries in
-``core.srb_model.LEG_NAMES`` order. Backends map their own orders (e.g. Unitree's FR, FL, RR,
+``core.model.conventions.LEG_NAMES`` order. Backends map their own orders (e.g. Unitree's FR, FL, RR,
 RL motor order) to these by name, once, inside the driver.
 """
 
@@ -14,8 +14,7 @@ from typing import Protocol, runtime_checkable
 
 import numpy as np
 
-JOINT_COUNT = 12
-FOOT_COUNT = 4
+from core.model.conventions import JOINT_COUNT
 
 
 def _zeros_12() -> np.ndarray:

@@ -15,9 +15,9 @@ from pathlib import Path
 import numpy as np
 import pinocchio as pin
 
-from core.robot_parameters import srb_parameters_from_model
-from core.settings import ROBOT_TYPES
-from core.srb_model import SrbParameters
+from core.model.robot_parameters import srb_parameters_from_model
+from core.model.srb_model import SrbParameters
+from core.model.team_settings import ROBOT_TYPES
 
 # Foot collision sphere radii [m] of the shipped descriptions (go2 foot sphere, a1 foot sphere).
 FOOT_RADIUS_M = {"go2": 0.022, "a1": 0.02}

@@ -4,13 +4,13 @@ from __future__ import annotations
 
 import numpy as np
 
-from core.closed_loop import Obstacle
-from core.gait import FootholdPlanner, TrotGait
-from core.mpc_inputs import MpcInputs
-from core.reference import WaypointReference, horizon_references, robot_state_from_payload
-from core.settings import MpcSettings, SolverSettings
-from core.standard_scenarios import PAYLOAD_HEIGHT_M, ring_team_settings
-from core.team_model import TeamModel
+from core.locomotion.gait import FootholdPlanner, TrotGait
+from core.model.obstacles import Obstacle
+from core.model.team import TeamModel
+from core.nmpc.mpc_inputs import MpcInputs
+from core.nmpc.reference import WaypointReference, horizon_references, robot_state_from_payload
+from core.nmpc.settings import MpcSettings, SolverSettings
+from core.plant.standard_scenarios import PAYLOAD_HEIGHT_M, ring_team_settings
 from drivers.robot_descriptions import srb_parameters
 
 INTERPRETED = SolverSettings(name="fatrop", compiled=False)

@@ -5,7 +5,7 @@ from __future__ import annotations
 import casadi as ca
 import numpy as np
 
-from core.srb_model import rotation_body_to_world
+from core.model.srb_model import rotation_body_to_world
 
 GRAVITY_M_S2 = 9.81
 

@@ -1,0 +1,22 @@
+"""State estimation: the payload's state from the agents, each robot's base velocity.
+
+Names load on first use (``core.lazy_exports``), so importing the package imports nothing
+else.
+"""
+
+from __future__ import annotations
+
+from typing import TYPE_CHECKING
+
+from core.lazy_exports import lazy_exports
+
+if TYPE_CHECKING:
+    from core.estimation.base_velocity import BaseVelocityEstimator, LegMeasurement
+    from core.estimation.payload_estimator import PayloadEstimator
+
+_SOURCES = {
+    "core.estimation.base_velocity": ["BaseVelocityEstimator", "LegMeasurement"],
+    "core.estimation.payload_estimator": ["PayloadEstimator"],
+}
+__all__ = ["BaseVelocityEstimator", "LegMeasurement", "PayloadEstimator"]
+__getattr__ = lazy_exports(__name__, _SOURCES)

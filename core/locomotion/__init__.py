@@ -1,0 +1,36 @@
+"""From plan to torques: trot gait, swing trajectories, plan tracking, whole-body control.
+
+Names load on first use (``core.lazy_exports``), so importing the package imports nothing
+else.
+"""
+
+from __future__ import annotations
+
+from typing import TYPE_CHECKING
+
+from core.lazy_exports import lazy_exports
+
+if TYPE_CHECKING:
+    from core.locomotion.gait import FootholdPlanner, TrotGait
+    from core.locomotion.plan_tracking import LegCoordinator, plan_set_point, wbc_target
+    from core.locomotion.settings import WbcSettings
+    from core.locomotion.swing_trajectory import SwingPoint, swing_point
+    from core.locomotion.whole_body_control import (
+        FloatingBaseState,
+        WbcOutput,
+        WbcTarget,
+        WholeBodyController,
+    )
+
+_SOURCES = {
+    "core.locomotion.gait": ["TrotGait", "FootholdPlanner"],
+    "core.locomotion.plan_tracking": ["LegCoordinator", "plan_set_point", "wbc_target"],
+    "core.locomotion.settings": ["WbcSettings"],
+    "core.locomotion.swing_trajectory": ["SwingPoint", "swing_point"],
+    "core.locomotion.whole_body_control": ["FloatingBaseState", "WbcTarget", "WbcOutput",
+        "WholeBodyController"],
+}
+__all__ = ["FloatingBaseState", "FootholdPlanner", "LegCoordinator", "SwingPoint", "TrotGait",
+           "WbcOutput", "WbcSettings", "WbcTarget", "WholeBodyController", "plan_set_point",
+           "swing_point", "wbc_target"]
+__getattr__ = lazy_exports(__name__, _SOURCES)

@@ -1,0 +1,44 @@
+"""NumPy rotations in the controller's convention (the CasADi twins live in core.model.srb_model).
+
+Theta = (roll, pitch, yaw) with R = Rz(yaw) Ry(pitch) Rx(roll), body -> world.
+"""
+
+from __future__ import annotations
+
+import numpy as np
+
+
+def rotation_from_euler(euler: np.ndarray) -> np.ndarray:
+    """R = Rz(yaw) Ry(pitch) Rx(roll) for Theta = (roll, pitch, yaw) (NumPy; as srb_model)."""
+    cr, sr = np.cos(euler[0]), np.sin(euler[0])
+    cp, sp = np.cos(euler[1]), np.sin(euler[1])
+    cy, sy = np.cos(euler[2]), np.sin(euler[2])
+    return np.array([
+        [cy * cp, cy * sp * sr - sy * cr, cy * sp * cr + sy * sr],
+        [sy * cp, sy * sp * sr + cy * cr, sy * sp * cr - cy * sr],
+        [-sp, cp * sr, cp * cr],
+    ])
+
+
+def euler_from_rotation(rotation: np.ndarray) -> np.ndarray:
+    """(roll, pitch, yaw) of R = Rz(yaw) Ry(pitch) Rx(roll), pitch in [-pi/2, pi/2]."""
+    return np.array([
+        np.arctan2(rotation[2, 1], rotation[2, 2]),
+        -np.arcsin(np.clip(rotation[2, 0], -1.0, 1.0)),
+        np.arctan2(rotation[1, 0], rotation[0, 0]),
+    ])
+
+
+def yaw_rotation(yaw_rad: float) -> np.ndarray:
+    """Rz(yaw): rotation about the world z-axis."""
+    return rotation_from_euler(np.array([0.0, 0.0, yaw_rad]))
+
+
+def rotation_from_quaternion_wxyz(quaternion: np.ndarray) -> np.ndarray:
+    """Rotation matrix of a (w, x, y, z) quaternion (normalised first)."""
+    w, x, y, z = np.asarray(quaternion, dtype=float) / np.linalg.norm(quaternion)
+    return np.array([
+        [1 - 2 * (y * y + z * z), 2 * (x * y - w * z), 2 * (x * z + w * y)],
+        [2 * (x * y + w * z), 1 - 2 * (x * x + z * z), 2 * (y * z - w * x)],
+        [2 * (x * z - w * y), 2 * (y * z + w * x), 1 - 2 * (x * x + y * y)],
+    ])

@@ -1,0 +1,74 @@
+"""Reference trajectories: the payload follows waypoints at a constant speed; each robot's
+reference keeps its coupling point on the payload's coupling point with the payload's yaw."""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+import numpy as np
+
+from core.model.rotations import yaw_rotation
+from core.model.srb_model import STATE_SIZE
+from core.model.team import TeamModel
+
+
+@dataclass(frozen=True)
+class WaypointReference:
+    """Piecewise-linear payload path through ``waypoints_m`` (n, 2) at ``speed_m_s``, at a
+    constant height and yaw [rad]."""
+
+    waypoints_m: np.ndarray
+    speed_m_s: float
+    height_m: float
+    yaw_rad: float = 0.0
+
+    def payload_state(self, time_s: float) -> np.ndarray:
+        points = np.asarray(self.waypoints_m, dtype=float)
+        segments = np.diff(points, axis=0)
+        lengths = np.linalg.norm(segments, axis=1)
+        distance = self.speed_m_s * max(time_s, 0.0)
+        state = np.zeros(STATE_SIZE)
+        state[2] = self.height_m
+        state[8] = self.yaw_rad
+        for start, segment, length in zip(points[:-1], segments, lengths, strict=True):
+            if distance <= length and length > 0:
+                direction = segment / length
+                state[0:2] = start + direction * distance
+                state[3:5] = direction * self.speed_m_s
+                return state
+            distance -= length
+        state[0:2] = points[-1]
+        return state
+
+    def goal_m(self) -> np.ndarray:
+        return np.asarray(self.waypoints_m, dtype=float)[-1]
+
+
+def robot_state_from_payload(team: TeamModel, agent: int, payload_state: np.ndarray
+                             ) -> np.ndarray:
+    """Robot state whose coupling point coincides with the payload's, same yaw, level trunk.
+
+    Valid for a level payload (roll = pitch = 0) turning about z only, as the references are.
+    """
+    yaw = payload_state[8]
+    rotation = yaw_rotation(yaw)
+    state = np.zeros(STATE_SIZE)
+    point = payload_state[0:3] + rotation @ team.coupling_points_in_payload_m[agent]
+    state[0:3] = point - rotation @ team.coupling_points_in_robot_m[agent]
+    point_velocity = payload_state[3:6] + np.cross(payload_state[9:12],
+                                                   point - payload_state[0:3])
+    omega = np.array([0.0, 0.0, payload_state[11]])  # level trunk turning with the payload
+    state[3:6] = point_velocity - np.cross(omega, rotation @ team.coupling_points_in_robot_m[agent])
+    state[8] = yaw
+    state[11] = payload_state[11]
+    return state
+
+
+def horizon_references(team: TeamModel, reference: WaypointReference, time_s: float,
+                       steps: int, sample_period_s: float) -> tuple[np.ndarray, np.ndarray]:
+    """Robot references (n_A, steps, 12) and payload reference (steps, 12) at stages 1..steps."""
+    payload = np.array([reference.payload_state(time_s + k * sample_period_s)
+                        for k in range(1, steps + 1)])
+    robots = np.array([[robot_state_from_payload(team, i, x) for x in payload]
+                       for i in range(team.agent_count)])
+    return robots, payload

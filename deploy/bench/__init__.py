@@ -1,0 +1,1 @@
+"""``porter bench``: NMPC, simulation, recorder, drivers and deploy benchmarks."""

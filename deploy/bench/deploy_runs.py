@@ -1,0 +1,113 @@
+"""``porter bench deploy``: loop timing of ``porter deploy --backend sim`` per time scale.
+
+Each run is ``porter deploy --config C --backend sim --yes --duration D --no-record`` in a
+process of its own, with the config's ``sim.time_scale`` replaced; the row comes from the
+summary it prints: outcome, WBC (500 Hz) and NMPC (60 Hz) loop rate and its ratio to the
+nominal one, period jitter |period - nominal| p50 / p99, the work per WBC tick and the NMPC
+update time. Rates and times are in simulated seconds (the loop's clock runs at the time
+scale), so rows at different scales compare directly.
+"""
+
+from __future__ import annotations
+
+import json
+import subprocess
+import sys
+import tempfile
+from pathlib import Path
+from typing import Any
+
+import yaml
+
+from deploy.config.deploy_config import config_path
+
+RUN_TIMEOUT_S = 900.0
+
+
+def scaled_config(config: Path | str, time_scale: float, directory: Path) -> Path:
+    """A copy of deploy config ``config`` (path or shipped name) in ``directory`` with
+    ``sim.time_scale`` = ``time_scale``; a relative scenario file path is made absolute."""
+    source = config_path(config)
+    data = yaml.safe_load(source.read_text())
+    scenario = Path(str(data.get("scenario", "")))
+    if scenario.suffix in (".yaml", ".yml") and not scenario.is_absolute() \
+            and (source.parent / scenario).exists():
+        data["scenario"] = str((source.parent / scenario).resolve())
+    data["sim"] = {**(data.get("sim") or {}), "time_scale": time_scale}
+    path = directory / f"{source.stem}-x{time_scale:g}.yaml"
+    path.write_text(yaml.safe_dump(data, sort_keys=False))
+    return path
+
+
+def run_once(config: Path, duration_s: float) -> dict[str, Any]:
+    """The summary of one ``porter deploy --backend sim`` run (its stdout JSON)."""
+    completed = subprocess.run(
+        [sys.executable, "-m", "deploy.cli", "deploy", "--config", str(config), "--backend",
+         "sim", "--yes", "--duration", f"{duration_s:g}", "--no-record"],
+        capture_output=True, text=True, timeout=RUN_TIMEOUT_S, check=False)
+    try:
+        summary: dict[str, Any] = json.loads(completed.stdout)
+    except json.JSONDecodeError:
+        raise RuntimeError(f"porter bench deploy: the run printed no summary (exit "
+                           f"{completed.returncode}):\n{completed.stderr[-2000:]}") from None
+    summary["exit_code"] = completed.returncode
+    return summary
+
+
+def deploy_row(summary: dict[str, Any]) -> dict[str, Any]:
+    """One table row from a ``porter deploy`` summary."""
+    wbc, nmpc = summary["wbc_loop"], summary["nmpc_loop"]
+
+    def ratio(loop: dict[str, Any]) -> float | None:
+        rate, nominal = loop.get("rate_hz"), loop.get("nominal_hz")
+        return rate / nominal if rate and nominal else None
+    outcome = ("completed" if summary["safe_stop"] is None and summary["final_state"] == "DONE"
+               else f"safe stop: {summary['safe_stop']}" if summary["safe_stop"]
+               else summary["result"])
+    return {"config": Path(str(summary["config"])).stem, "time_scale": summary["time_scale"],
+            "outcome": outcome, "exit_code": summary.get("exit_code"),
+            "run_s": summary["run_s"], "wbc": wbc, "nmpc": nmpc,
+            "wbc_rate_ratio": ratio(wbc), "nmpc_rate_ratio": ratio(nmpc),
+            "nmpc_deadline_misses": summary["nmpc_deadline_misses"],
+            "wbc_overruns": summary["wbc_overruns"],
+            "progress_toward_goal_m": summary["payload"]["progress_toward_goal_m"]}
+
+
+def run_bench(config: str, time_scales: list[float], runs: int,
+              duration_s: float) -> list[dict[str, Any]]:
+    """Rows for every time scale x run, in that order."""
+    rows = []
+    with tempfile.TemporaryDirectory() as directory:
+        for time_scale in time_scales:
+            scaled = scaled_config(config, time_scale, Path(directory))
+            for _ in range(runs):
+                row = deploy_row(run_once(scaled, duration_s))
+                row["config"] = config_path(config).stem  # not the scaled copy's name
+                rows.append(row)
+    return rows
+
+
+def _number(value: float | None, width: int, digits: int) -> str:
+    return f"{'-':>{width}}" if value is None else f"{value:>{width}.{digits}f}"
+
+
+def format_table(rows: list[dict[str, Any]]) -> str:
+    header = (f"{'config':<12} {'scale':>5} {'run s':>5} {'wbc Hz':>6} {'ratio':>5} "
+              f"{'jit p50':>7} {'jit p99':>7} {'busy p50':>8} {'nmpc Hz':>7} {'ratio':>5} "
+              f"{'jit p50':>7} {'jit p99':>7} {'upd p50':>7} {'upd p99':>7} {'miss':>4}  outcome")
+    lines = [header, "-" * len(header)]
+    for row in rows:
+        wbc, nmpc = row["wbc"], row["nmpc"]
+        lines.append(
+            f"{row['config']:<12} {row['time_scale']:>5.2f} {_number(row['run_s'], 5, 1)} "
+            f"{_number(wbc.get('rate_hz'), 6, 0)} {_number(row['wbc_rate_ratio'], 5, 2)} "
+            f"{_number(wbc.get('jitter_p50_ms'), 7, 3)} {_number(wbc.get('jitter_p99_ms'), 7, 3)} "
+            f"{_number(wbc.get('busy_p50_ms'), 8, 3)} {_number(nmpc.get('rate_hz'), 7, 1)} "
+            f"{_number(row['nmpc_rate_ratio'], 5, 2)} {_number(nmpc.get('jitter_p50_ms'), 7, 2)} "
+            f"{_number(nmpc.get('jitter_p99_ms'), 7, 2)} {_number(nmpc.get('busy_p50_ms'), 7, 1)} "
+            f"{_number(nmpc.get('busy_p99_ms'), 7, 1)} {row['nmpc_deadline_misses']:>4}  "
+            f"{row['outcome']}")
+    lines.append("ms and Hz in simulated time; ratio = achieved / nominal rate; jit = |period - "
+                 "nominal|; busy = work per WBC tick; upd = NMPC update time; miss = updates "
+                 "over 1/60 s")
+    return "\n".join(lines)

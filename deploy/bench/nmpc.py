@@ -1,0 +1,213 @@
+"""``porter bench nmpc``: closed-loop NMPC timing in the shape of the paper's Table I.
+
+For each team size, in one run: the centralized NMPC and the ADMM distributed NMPC (process
+executor: local solves in parallel, as on the robots) with the chosen solver, plus the ADMM
+distributed NMPC with the paper-faithful ``ipopt-reference`` configuration. Every controller
+drives the SRB plant through the standard scenario (0.3 m/s past CBF-active obstacles).
+"""
+
+from __future__ import annotations
+
+import json
+import time
+from dataclasses import dataclass
+from pathlib import Path
+
+import numpy as np
+
+from core.nmpc.admm_executor import LocalSolverSpec, SerialExecutor
+from core.nmpc.admm_mpc import DistributedMpc
+from core.nmpc.centralized_mpc import CentralizedMpc
+from core.nmpc.settings import MpcSettings, SolverSettings
+from core.nmpc.transport_problem import build_transport_problem
+from core.nmpc.warm_start import initial_guess
+from core.plant.closed_loop import ClosedLoopResult, run_closed_loop
+from core.plant.standard_scenarios import standard_scenario
+from deploy.runtime.codegen_cache import CompiledCodeCache
+from deploy.runtime.process_executor import ProcessExecutor
+from drivers.robot_descriptions import srb_parameters
+
+
+@dataclass
+class AccuracyCheck:
+    """Same local NLP, same parameters and initial guess, solved by this solver and by
+    ipopt-reference: largest differences over the sampled NMPC decisions."""
+
+    agents: int
+    solver: str
+    samples: int
+    max_grf_difference_n: float
+    max_payload_position_difference_m: float
+    max_objective_relative_difference: float
+
+
+def accuracy_check(team, settings: MpcSettings, inputs_samples: list, cache
+                   ) -> AccuracyCheck:
+    """Solve agent 0's local NLP of each sampled decision with both configurations."""
+    reference = MpcSettings(solver=SolverSettings(name="ipopt-reference"))
+    fast = LocalSolverSpec(settings, team.agent_count, cache).build()
+    slow = LocalSolverSpec(reference, team.agent_count, cache).build()
+    problem = build_transport_problem(settings, team.agent_count, local=True)
+    grf, payload, objective = 0.0, 0.0, 0.0
+    layout = problem.nlp.decision
+    for inputs in inputs_samples:
+        guess = initial_guess(problem, team, inputs, None, agent=0)
+        target = problem.shared_trajectory(guess)
+        parameters = problem.parameter_vector(team, inputs, agent=0, consensus_target=target)
+        bounds = problem.decision_bounds(inputs.contacts, agent=0)
+        a = fast.solve(guess, parameters, *bounds, warm_start=False)
+        b = slow.solve(guess, parameters, *bounds, warm_start=False)
+        grf = max(grf, float(np.max(np.abs(layout.get(a.decision, "grf_self@0")
+                                           - layout.get(b.decision, "grf_self@0")))))
+        payload = max(payload, max(float(np.max(np.abs(
+            layout.get(a.decision, f"payload@{k}")[0:3] - layout.get(b.decision, f"payload@{k}")[0:3])))
+            for k in range(problem.horizon_steps + 1)))
+        objective = max(objective, abs(a.stats.objective - b.stats.objective)
+                        / max(abs(b.stats.objective), 1e-12))
+    return AccuracyCheck(team.agent_count, settings.solver.name, len(inputs_samples), grf,
+                         payload, objective)
+
+
+class _SampleRecorder:
+    """Wraps ``update``: keeps every 20th decision's inputs (at most 10) and each update's CPU
+    time [s], this process's plus, with worker processes (``workers``), their solves'."""
+
+    def __init__(self, update, workers: bool) -> None:
+        self.update = update
+        self.workers = workers
+        self.samples: list = []
+        self.cpu_s: list[float] = []
+        self.seen = 0
+
+    def __call__(self, inputs):
+        if self.seen % 20 == 0 and len(self.samples) < 10:
+            self.samples.append(inputs)
+        self.seen += 1
+        start = time.process_time()
+        plan = self.update(inputs)
+        cpu = time.process_time() - start
+        if self.workers:
+            cpu += sum(s.cpu_time_s for s in plan.solves)
+        self.cpu_s.append(cpu)
+        return plan
+
+
+@dataclass
+class BenchRow:
+    mode: str
+    agents: int
+    solver: str
+    variables: int
+    iterations_mean: float
+    update_ms: dict[str, float]
+    cpu_ms: dict[str, float]  # CPU per update, summed over the processes that worked on it
+    local_ms: dict[str, float] | None
+    success_rate: float
+    min_h_m: float
+
+    def as_dict(self) -> dict:
+        row = dict(self.__dict__)
+        if row["local_ms"] is None:
+            del row["local_ms"]
+        return row
+
+
+def _summary(values_s: list[float]) -> dict[str, float]:
+    ms = 1e3 * np.asarray(values_s[1:] or values_s)  # the cold first update is not timed
+    return {"mean": float(ms.mean()), "std": float(ms.std()), "median": float(np.median(ms)),
+            "p95": float(np.percentile(ms, 95))}
+
+
+def _row(mode: str, agents: int, solver: str, variables: int, result: ClosedLoopResult,
+         cpu_s: list[float]) -> BenchRow:
+    local = _summary(result.local_solve_time_s) if mode == "distributed" else None
+    return BenchRow(mode, agents, solver, variables, float(np.mean(result.iterations[1:])),
+                    _summary(result.update_time_s), _summary(cpu_s), local,
+                    float(np.mean(result.success)), float(np.min(result.min_h_m)))
+
+
+def run_bench(agent_counts: list[int], solver: str, duration_s: float, parallel: bool,
+              include_reference: bool, compiled: bool = True, log=print,
+              base_settings: MpcSettings | None = None
+              ) -> tuple[list[BenchRow], list[AccuracyCheck]]:
+    rows = []
+    checks = []
+    cache = CompiledCodeCache()
+    for agents in agent_counts:
+        scenario = standard_scenario(agents, srb_parameters)
+        team = scenario.team
+        configs = [("centralized", solver), ("distributed", solver)]
+        if include_reference:
+            configs.append(("distributed", "ipopt-reference"))
+        for mode, name in configs:
+            base = base_settings or MpcSettings()
+            settings = base.model_copy(update={"solver": base.solver.model_copy(
+                update={"name": name, "compiled": compiled})})
+            log(f"  {agents} agents, {mode}, {name}: building (compiled code is cached)...")
+            controller: CentralizedMpc | DistributedMpc
+            if mode == "centralized":
+                controller = CentralizedMpc(team, settings, compiler=cache)
+                variables = controller.problem.nlp.variable_count
+            else:
+                spec = LocalSolverSpec(settings, agents, cache)
+                executor = ProcessExecutor(spec) if parallel else SerialExecutor(spec)
+                controller = DistributedMpc(team, settings, executor=executor)
+                variables = controller.problem.nlp.variable_count
+            recorder = _SampleRecorder(controller.update,
+                                       workers=mode == "distributed" and parallel)
+            controller.update = recorder  # type: ignore[method-assign]
+            try:
+                result = run_closed_loop(controller, team, team, settings, scenario.reference,
+                                         scenario.obstacles, duration_s)
+            finally:
+                if isinstance(controller, DistributedMpc):
+                    controller.close()
+            if mode == "distributed" and name != "ipopt-reference" and include_reference:
+                checks.append(accuracy_check(team, settings, recorder.samples, cache))
+            row = _row(mode, agents, name, variables, result, recorder.cpu_s)
+            log(f"    median update {row.update_ms['median']:.2f} ms, "
+                f"success {row.success_rate:.0%}, min h {row.min_h_m:.3f} m")
+            rows.append(row)
+    return rows, checks
+
+
+def format_table(rows: list[BenchRow]) -> str:
+    """Table I layout plus local NLP time and the ratios measured in this run."""
+    header = (f"{'n_A':>3} {'mode':<12} {'solver':<16} {'vars':>5} {'iters':>6} "
+              f"{'upd mean':>9} {'std':>6} {'median':>7} {'p95':>7} {'cpu med':>7} "
+              f"{'local med':>9} {'dist/cent':>9} {'ref/this':>8}")
+    lines = [header, "-" * len(header)]
+    for row in rows:
+        cent = next((r for r in rows if r.agents == row.agents and r.mode == "centralized"
+                     and r.solver == row.solver), None)
+        ref = next((r for r in rows if r.agents == row.agents and r.mode == "distributed"
+                    and r.solver == "ipopt-reference"), None)
+        ratio = (f"{row.update_ms['mean'] / cent.update_ms['mean']:.2f}"
+                 if row.mode == "distributed" and cent else "")
+        speedup = (f"{ref.local_ms['median'] / row.local_ms['median']:.1f}x"  # type: ignore[index]
+                   if row.local_ms and ref and ref is not row else "")
+        local = f"{row.local_ms['median']:.2f}" if row.local_ms else ""
+        u = row.update_ms
+        lines.append(f"{row.agents:>3} {row.mode:<12} {row.solver:<16} {row.variables:>5} "
+                     f"{row.iterations_mean:>6.1f} {u['mean']:>9.2f} {u['std']:>6.2f} "
+                     f"{u['median']:>7.2f} {u['p95']:>7.2f} {row.cpu_ms['median']:>7.2f} "
+                     f"{local:>9} {ratio:>9} {speedup:>8}")
+    lines.append("times in ms; 'cpu med' = median CPU time per update summed over the processes "
+                 "(ADMM workers included); 'ref/this' = ipopt-reference local NLP median / this "
+                 "local NLP median; 'dist/cent' = mean update-time ratio")
+    return "\n".join(lines)
+
+
+def format_accuracy(checks: list[AccuracyCheck]) -> str:
+    lines = ["local NLP accuracy vs ipopt-reference (same parameters and initial guess):"]
+    for c in checks:
+        lines.append(f"  {c.agents} agents, {c.solver}: {c.samples} decisions, max |dGRF| "
+                     f"{c.max_grf_difference_n:.3f} N, max |d payload p| "
+                     f"{c.max_payload_position_difference_m:.2e} m, max rel d objective "
+                     f"{c.max_objective_relative_difference:.1e}")
+    return "\n".join(lines)
+
+
+def write_json(rows: list[BenchRow], checks: list[AccuracyCheck], path: Path) -> None:
+    path.write_text(json.dumps({"rows": [r.as_dict() for r in rows],
+                                "accuracy": [c.__dict__ for c in checks]}, indent=2))

@@ -1,0 +1,57 @@
+"""``porter bench sim``: real-time factor, WBC tick and NMPC update times of scenarios in the
+MuJoCo loop, measured in one run, as a table (and JSON).
+
+Each scenario runs for ``duration_s`` simulated seconds (the lockstep loop is not paced, so the
+real-time factor is simulated time / wall time). The wall time is split into NMPC updates, WBC
+ticks and the rest (physics, sensor reads, gait, metrics), so the table shows where time goes.
+"""
+
+from __future__ import annotations
+
+import json
+from pathlib import Path
+
+from core.nmpc.settings import MpcSettings
+from deploy.config.scenario import load_scenario
+from deploy.runtime.codegen_cache import CompiledCodeCache
+from deploy.runtime.team_loop import TeamLoop
+
+
+def bench_scenario(name: str, duration_s: float, executor: str, base: MpcSettings,
+                   cache: CompiledCodeCache) -> dict:
+    """Run scenario ``name`` for ``duration_s`` and return its summary plus its name."""
+    scenario = load_scenario(name)
+    scenario = scenario.model_copy(update={
+        "duration_s": min(duration_s, scenario.duration_s),
+        "controller": scenario.controller.model_copy(update={"executor": executor})})
+    loop = TeamLoop(scenario, cache, base)
+    try:
+        summary = loop.run()
+    finally:
+        loop.close()
+    summary["robots"] = len(scenario.team)
+    return summary
+
+
+def format_table(rows: list[dict]) -> str:
+    header = (f"{'scenario':<22} {'n':>2} {'sim s':>6} {'RTF':>5} {'wbc med':>8} "
+              f"{'wbc p95':>8} {'nmpc med':>9} {'nmpc p95':>9} {'miss':>5} "
+              f"{'nmpc %':>7} {'wbc %':>6} {'rest %':>7}")
+    lines = [header, "-" * len(header)]
+    for row in rows:
+        wall = row["wall_s"]
+        nmpc = 100 * row["nmpc_wall_s"] / wall
+        wbc = 100 * row["wbc_wall_s"] / wall
+        lines.append(
+            f"{row['scenario']:<22} {row['robots']:>2} {row['duration_s']:>6.1f} "
+            f"{row['real_time_factor']:>5.2f} {row['wbc_tick_ms']['median']:>8.3f} "
+            f"{row['wbc_tick_ms']['p95']:>8.3f} {row['nmpc_update_ms']['median']:>9.2f} "
+            f"{row['nmpc_update_ms']['p95']:>9.2f} "
+            f"{row['deadline_misses']:>5} {nmpc:>7.1f} {wbc:>6.1f} {100 - nmpc - wbc:>7.1f}")
+    lines.append("times in ms per robot WBC tick / per NMPC update; RTF = simulated / wall time; "
+                 "miss = NMPC updates over 16.7 ms; % = share of the loop's wall time")
+    return "\n".join(lines)
+
+
+def write_json(rows: list[dict], path: Path) -> None:
+    path.write_text(json.dumps({"rows": rows}, indent=2) + "\n")

@@ -1,0 +1,224 @@
+"""``porter deploy --config CONFIG [--backend hw|sim] [--yes] [--duration S] [--record LOG.mcap]``.
+
+Builds the controller (NMPC, WBCs), starts the simulated world for ``--backend sim``, opens
+the links, records the run (``deploy.recording.run_record``, backend ``hw`` or ``sim``) and runs
+``deploy.runtime.deploy_loop``. Prints the pre-flight report, the state transitions and a summary
+(JSON on stdout; also the log's summary metadata). Exit codes: 0 ran and sat down, 1
+pre-flight failed, 2 bad config / arguments, 3 safe stop, 130 stopped by Ctrl-C / SIGTERM
+(the team sat down first), 4 the operator declined to arm.
+"""
+
+from __future__ import annotations
+
+import argparse
+import contextlib
+import json
+import math
+import sys
+import threading
+import time
+from pathlib import Path
+from typing import Any
+
+import numpy as np
+import psutil
+
+from core.model.conventions import PAYLOAD_NAME
+from deploy.config.deploy_config import load_deploy_config
+from deploy.config.files import ConfigError
+from deploy.recording.flight_recorder import FlightRecorder
+from deploy.recording.run_record import default_log_path, open_run_recorder
+from deploy.runtime.codegen_cache import CompiledCodeCache
+from deploy.runtime.controller import TeamController
+from deploy.runtime.deploy_loop import DeployLoop
+from deploy.runtime.links import open_links
+from deploy.runtime.stop_request import StopRequest
+from deploy.safety.supervisor import SafetyState
+from deploy.sim_backend.backend import SimBackend
+
+SWITCH_INTERVAL_S = 2e-4
+
+
+class OperatorPrompt:
+    """The operator's answer from ``stream`` (read in a thread on first call, so the loop keeps
+    holding the robots meanwhile): True for ``y``/``yes``, False for anything else or EOF.
+    ``assume_yes`` (``--yes``) answers True at once."""
+
+    def __init__(self, assume_yes: bool = False, stream: Any = None) -> None:
+        self.stream = stream if stream is not None else sys.stdin
+        self.answer: bool | None = True if assume_yes else None
+        self._thread: threading.Thread | None = None
+
+    def __call__(self) -> bool | None:
+        if self._thread is None and self.answer is None:
+            print("porter deploy: the team stands. Arm and start the run? [yes/no] ",
+                  end="", file=sys.stderr, flush=True)
+            self._thread = threading.Thread(target=self._read, daemon=True,
+                                            name="porter-operator")
+            self._thread.start()
+        return self.answer
+
+    def _read(self) -> None:
+        line = self.stream.readline()
+        self.answer = line.strip().lower() in ("y", "yes")
+
+
+def run_deploy(args: argparse.Namespace) -> int:
+    config, scenario = load_deploy_config(args.config)
+    if args.no_record and args.backend == "hw":
+        raise ConfigError("--no-record: every run on robots is recorded (allowed with "
+                          "--backend sim only)")
+    duration_s = args.duration if args.duration is not None else scenario.duration_s
+    if not duration_s > 0:
+        raise ConfigError(f"--duration: must be positive, got {duration_s}")
+    say = lambda text: print(f"porter deploy: {text}", file=sys.stderr, flush=True)  # noqa: E731
+    say(f"{config_name(args.config)}: scenario {scenario.name!r}, robots "
+        f"{', '.join(config.robots)}, backend {args.backend}, run {duration_s:g} s")
+    control = TeamController(scenario, CompiledCodeCache(), tick_s=1.0 / config.rates.wbc_hz)
+    backend: SimBackend | None = None
+    recorder: FlightRecorder | None = None
+    links = None
+    loop: DeployLoop | None = None
+    stop = StopRequest()
+    # The loop shares the interpreter lock with the NMPC, recorder, MoCap and CAN threads: a
+    # thread that takes it keeps it up to the switch interval (5 ms by default, 2.5 WBC
+    # periods) whenever the loop releases it (sleep, DDS write, BLAS); 0.2 ms bounds that wait.
+    switch_interval_s = sys.getswitchinterval()
+    sys.setswitchinterval(SWITCH_INTERVAL_S)
+    try:
+        if args.backend == "sim":
+            backend = SimBackend(config, scenario)
+            say("simulated world running (MuJoCo, fakes on loopback)")
+        clock, sleep = ((backend.clock, backend.clock.sleep) if backend is not None
+                        else (time.monotonic, time.sleep))
+        if backend is not None:
+            config = backend.config  # the links to the fakes, sim.safety_overrides applied
+        links = open_links(config, clock)
+        if not args.no_record:
+            path = Path(args.record) if args.record else default_log_path(scenario).with_name(
+                f"deploy-{default_log_path(scenario).name}")
+            recorder = open_run_recorder(path, scenario, control.settings, control.wbc_settings,
+                                         args.backend, config.recorder)
+            say(f"recording to {path}")
+        loop = DeployLoop(config, control, links, recorder, OperatorPrompt(args.yes), stop,
+                          duration_s, clock, sleep)
+        with stop.installed():
+            loop.run()
+    finally:
+        sys.setswitchinterval(switch_interval_s)
+        summary = None
+        if loop is not None:
+            summary = deploy_summary(loop, args, backend)
+        if recorder is not None:
+            recorder.close(summary)
+        if links is not None:
+            links.close()
+        if backend is not None:
+            backend.close()
+        control.close()
+    assert loop is not None and summary is not None
+    if loop.report is not None and not loop.report.ok:
+        print(loop.report.text(), file=sys.stderr)
+    print(json.dumps(summary, indent=2))
+    say(f"{loop.ended_by}; final state {loop.supervisor.state.name}")
+    return exit_code(loop, stop)
+
+
+def exit_code(loop: DeployLoop, stop: StopRequest) -> int:
+    if loop.report is not None and not loop.report.ok:
+        return 1
+    if any(t.target == SafetyState.SAFE_STOP for t in loop.supervisor.transitions):
+        return 3
+    if stop():
+        return 130
+    if loop.ended_by == "the operator declined to arm":
+        return 4
+    return 0
+
+
+def config_name(path: str) -> str:
+    return Path(path).name
+
+
+def deploy_summary(loop: DeployLoop, args: argparse.Namespace,
+                   backend: SimBackend | None) -> dict[str, Any]:
+    """The run's summary: outcome, transitions, loop rates and jitter, NMPC health, payload
+    progress from the MoCap, and (``--backend sim``) simulator ground truth."""
+    supervisor = loop.supervisor
+    run_s = None
+    if SafetyState.RUNNING in loop.since:
+        end = next((t.time_s for t in supervisor.transitions
+                    if t.source == SafetyState.RUNNING), loop.now())
+        run_s = end - loop.since[SafetyState.RUNNING]
+    summary: dict[str, Any] = {
+        "config": str(args.config), "backend": args.backend,
+        "scenario": loop.control.scenario.name, "robots": loop.names,
+        "result": loop.ended_by, "final_state": supervisor.state.name,
+        "safe_stop": supervisor.fault or None,
+        "transitions": [f"{t.time_s:.3f} s {t.text}" for t in supervisor.transitions],
+        "preflight": [{"item": c.item, "ok": c.ok, "detail": c.detail}
+                      for c in (loop.report.checks if loop.report else [])],
+        "duration_s": loop.duration_s, "run_s": run_s,
+        "wbc_loop": loop.wbc_stats.summary(),
+        "nmpc_loop": loop.nmpc.stats.summary(),
+        "wbc_overruns": loop.pacer.overruns if loop.pacer else 0,
+        "nmpc_updates": loop.nmpc.updates, "nmpc_deadline_misses": loop.nmpc.deadline_misses,
+        "nmpc_failed_updates": loop.nmpc.solver_failures,
+        "nmpc_margin_flags": loop.nmpc.margin_flags,
+        "torque_saturations": loop.saturations,
+        "time_scale": loop.config.sim.time_scale if backend is not None else 1.0,
+        "payload": payload_progress(loop),
+        "robot_min_height_running_m": {name: min(h) if h else None
+                                       for name, h in loop.heights.items()},
+    }
+    if loop.recording is not None:
+        summary["recorder_dropped"] = loop.recording.recorder.dropped
+    summary["cpu_s"] = cpu_seconds()
+    if backend is not None:
+        summary["sim_ground_truth"] = backend.ground_truth()
+    return _plain(summary)
+
+
+def cpu_seconds() -> dict[str, float]:
+    """CPU time [s] (user + system) of this process (the loop, NMPC, recorder, MoCap and CAN
+    threads) and of its live children (the simulated world, the ADMM workers)."""
+    this = psutil.Process()
+    result = {"porter": sum(this.cpu_times()[0:2])}
+    for child in this.children(recursive=True):
+        with contextlib.suppress(psutil.Error):
+            result[f"{child.name()} {child.pid}"] = sum(child.cpu_times()[0:2])
+    return result
+
+
+def payload_progress(loop: DeployLoop) -> dict[str, Any]:
+    """Payload positions [m] (MoCap) at the start and end of RUNNING, the goal, and how much
+    closer to the goal it got."""
+    goal = loop.control.reference.goal_m()
+    ends = {key: frame.poses.get(PAYLOAD_NAME) for key, frame in loop.frames.items()}
+    start, end = ends.get("start"), ends.get("end")
+    result: dict[str, Any] = {"goal_m": goal, "start_m": None, "end_m": None,
+                              "progress_toward_goal_m": None}
+    if start is not None:
+        result["start_m"] = start[0]
+    if end is not None:
+        result["end_m"] = end[0]
+    if start is not None and end is not None:
+        result["progress_toward_goal_m"] = float(
+            np.linalg.norm(np.asarray(goal)[0:2] - start[0][0:2])
+            - np.linalg.norm(np.asarray(goal)[0:2] - end[0][0:2]))
+    return result
+
+
+def _plain(value: Any) -> Any:
+    """JSON-ready: arrays to lists, non-finite floats to None."""
+    if isinstance(value, dict):
+        return {str(k): _plain(v) for k, v in value.items()}
+    if isinstance(value, (list, tuple)):
+        return [_plain(v) for v in value]
+    if isinstance(value, np.ndarray):
+        return _plain(value.tolist())
+    if isinstance(value, (float, np.floating)):
+        return float(value) if math.isfinite(value) else None
+    if isinstance(value, np.integer):
+        return int(value)
+    return value

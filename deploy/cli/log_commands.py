@@ -1,0 +1,72 @@
+"""``porter log info LOG`` and ``porter log recover LOG``."""
+
+from __future__ import annotations
+
+import argparse
+import sys
+from pathlib import Path
+
+from deploy.recording.log_format import RUN_METADATA
+from deploy.recording.log_reader import LogError, LogFile, recover
+
+SUMMARY_KEYS = ("scenario", "duration_s", "reached_goal", "falls", "final_goal_distance_m",
+                "min_h_m", "rms_payload_position_error_m", "max_coupling_error_m",
+                "admm_residual_rms", "nmpc_update_ms", "nmpc_updates", "deadline_misses",
+                "failed_solves", "wbc_tick_ms", "real_time_factor")
+
+
+def describe(log: LogFile) -> str:
+    """Duration, topics with counts and rates, metadata and the run's summary metrics."""
+    counts, start_ns, end_ns = log.message_counts()
+    duration_s = (end_ns - start_ns) * 1e-9
+    lines = [f"{log.path}: {log.path.stat().st_size / 1e6:.2f} MB, {duration_s:.3f} s, "
+             f"{sum(counts.values())} messages on {len(counts)} topics"]
+    metadata = log.metadata()
+    run = metadata.get(RUN_METADATA, {})
+    lines.append("run: " + ", ".join(f"{key} {run[key]}" for key in (
+        "scenario", "seed", "backend", "controller_mode", "git_revision", "porter_version",
+        "started_utc") if key in run))
+    recorder = metadata.get("recorder")
+    if recorder:
+        lines.append(f"recorder: {recorder.get('messages_written')} written, "
+                     f"{recorder.get('messages_dropped')} dropped"
+                     + (f", error {recorder['writer_error']}" if recorder.get("writer_error")
+                        else ""))
+    lines.append(f"{'topic':32s} {'messages':>9s} {'rate [Hz]':>10s}")
+    for topic in sorted(counts):
+        rate = counts[topic] / duration_s if duration_s > 0 else 0.0
+        lines.append(f"{topic:32s} {counts[topic]:9d} {rate:10.1f}")
+    lines.append("attachments: " + ", ".join(sorted(log.attachments())))
+    summary = log.summary()
+    if summary is None:
+        lines.append("summary: none (the run ended before writing one)")
+    else:
+        lines.append("summary:")
+        lines.extend(f"  {key}: {summary[key]}" for key in SUMMARY_KEYS if key in summary)
+    return "\n".join(lines)
+
+
+def run_log_info(args: argparse.Namespace) -> int:
+    try:
+        print(describe(LogFile(args.log)))
+    except LogError as error:
+        print(f"porter: {error}", file=sys.stderr)
+        return 2
+    return 0
+
+
+def run_log_recover(args: argparse.Namespace) -> int:
+    source = Path(args.log)
+    output = Path(args.output) if args.output else source.with_suffix(".recovered.mcap")
+    if output.resolve() == source.resolve():
+        print("porter: the recovered file must not overwrite the original", file=sys.stderr)
+        return 2
+    try:
+        result = recover(source, output)
+    except (LogError, OSError) as error:
+        print(f"porter: {error}", file=sys.stderr)
+        return 2
+    ending = (f"the stream ended inside a record ({result.error}); the unfinished chunk is lost"
+              if result.chunks_lost else "the file was complete")
+    print(f"porter log recover: {result.messages} messages copied to {output}; {ending}")
+    return 0

@@ -1,0 +1,302 @@
+"""The ``porter`` command line."""
+
+from __future__ import annotations
+
+import argparse
+import signal
+import sys
+from pathlib import Path
+from typing import TYPE_CHECKING
+
+if TYPE_CHECKING:
+    from core.nmpc.settings import MpcSettings
+
+
+def mpc_settings(args: argparse.Namespace) -> MpcSettings:
+    """``MpcSettings`` from ``--config`` (YAML overrides of the paper defaults) or defaults."""
+    from core.nmpc.settings import MpcSettings
+    from deploy.config.files import load_settings
+
+    return load_settings(args.config, MpcSettings) if args.config else MpcSettings()
+
+
+def _bench_nmpc(args: argparse.Namespace) -> int:
+    from deploy.bench.nmpc import format_accuracy, format_table, run_bench, write_json
+
+    print(f"porter bench nmpc: agents {args.agents}, solver {args.solver}, "
+          f"{args.duration} s closed loop each, {'process' if args.parallel else 'serial'} "
+          "executor")
+    rows, checks = run_bench(args.agents, args.solver, args.duration, args.parallel,
+                             not args.no_reference, compiled=not args.interpreted,
+                             base_settings=mpc_settings(args))
+    print(format_table(rows))
+    if checks:
+        print(format_accuracy(checks))
+    if args.json:
+        write_json(rows, checks, Path(args.json))
+        print(f"wrote {args.json}")
+    return 0
+
+
+def _bench_sim(args: argparse.Namespace) -> int:
+    from deploy.bench.sim import bench_scenario, format_table, write_json
+    from deploy.config.scenario import shipped_scenarios
+    from deploy.runtime.codegen_cache import CompiledCodeCache
+
+    names = args.scenarios or shipped_scenarios()
+    print(f"porter bench sim: {', '.join(names)}; {args.duration} s each, "
+          f"{args.executor} ADMM executor")
+    cache = CompiledCodeCache()
+    settings = mpc_settings(args)
+    rows = [bench_scenario(name, args.duration, args.executor, settings, cache)
+            for name in names]
+    print(format_table(rows))
+    if args.json:
+        write_json(rows, Path(args.json))
+        print(f"wrote {args.json}")
+    return 0
+
+
+def _bench_recorder(args: argparse.Namespace) -> int:
+    import json
+
+    from deploy.bench.recorder import bench_memory, bench_overhead, format_tables
+    from deploy.runtime.codegen_cache import CompiledCodeCache
+
+    print(f"porter bench recorder: {args.scenario}, {args.duration} s x {args.repeats} runs "
+          f"each with and without the recorder ({args.executor} ADMM executor); memory over "
+          f"{args.memory_minutes} simulated minutes")
+    rows, messages = bench_overhead(args.scenario, args.duration, args.repeats, args.executor,
+                                    mpc_settings(args), CompiledCodeCache())
+    memory = bench_memory(messages, args.memory_minutes) if args.memory_minutes > 0 else None
+    print(format_tables(rows, memory))
+    if args.json:
+        Path(args.json).write_text(json.dumps({"rows": rows, "memory": memory}, indent=2) + "\n")
+        print(f"wrote {args.json}")
+    return 0
+
+
+def _bench_drivers(args: argparse.Namespace) -> int:
+    from deploy.bench.drivers import format_table, run_bench, write_json
+
+    print(f"porter bench drivers: each shim against its fake on loopback; {args.samples} "
+          f"round trips per Unitree link at 500 Hz, {args.stream_samples} NatNet frames "
+          "(120 Hz) and CAN samples (100 Hz)")
+    rows, counters = run_bench(args.samples, args.stream_samples, args.domain)
+    print(format_table(rows))
+    if args.json:
+        write_json(rows, counters, Path(args.json))
+        print(f"wrote {args.json}")
+    return 0
+
+
+def _bench_deploy(args: argparse.Namespace) -> int:
+    import json
+
+    from deploy.bench.deploy_runs import format_table, run_bench
+
+    print(f"porter bench deploy: {args.config} on the sim backend, time scales "
+          f"{', '.join(f'{s:g}' for s in args.time_scales)}, {args.runs} run(s) each, "
+          f"{args.duration:g} s running (plus pre-flight, stand-up and sit-down)")
+    rows = run_bench(args.config, args.time_scales, args.runs, args.duration)
+    print(format_table(rows))
+    if args.json:
+        Path(args.json).write_text(json.dumps({"rows": rows}, indent=2) + "\n")
+        print(f"wrote {args.json}")
+    return 0
+
+
+def _sim(args: argparse.Namespace) -> int:
+    from deploy.cli.sim_command import run_sim
+
+    return run_sim(args, mpc_settings(args))
+
+
+def _deploy(args: argparse.Namespace) -> int:
+    from deploy.cli.deploy_command import run_deploy
+
+    return run_deploy(args)
+
+
+def _replay(args: argparse.Namespace) -> int:
+    from deploy.cli.replay_command import run_replay
+
+    return run_replay(args)
+
+
+def _log_info(args: argparse.Namespace) -> int:
+    from deploy.cli.log_commands import run_log_info
+
+    return run_log_info(args)
+
+
+def _log_recover(args: argparse.Namespace) -> int:
+    from deploy.cli.log_commands import run_log_recover
+
+    return run_log_recover(args)
+
+
+def _regress(args: argparse.Namespace) -> int:
+    from deploy.recording.regression import run_regress
+
+    return run_regress(args)
+
+
+def build_parser() -> argparse.ArgumentParser:
+    parser = argparse.ArgumentParser(prog="porter", description=__doc__)
+    commands = parser.add_subparsers(dest="command", required=True)
+
+    bench = commands.add_parser("bench", help="benchmarks that print tables")
+    bench_kinds = bench.add_subparsers(dest="bench", required=True)
+    nmpc = bench_kinds.add_parser("nmpc", help="centralized vs ADMM NMPC update times")
+    nmpc.add_argument("--agents", type=int, nargs="+", default=[2, 3, 4])
+    nmpc.add_argument("--solver", default="fatrop", choices=["fatrop", "ipopt"])
+    nmpc.add_argument("--duration", type=float, default=6.0, help="closed-loop seconds per row")
+    nmpc.add_argument("--serial", dest="parallel", action="store_false",
+                      help="run ADMM local solves serially instead of one process per agent")
+    nmpc.add_argument("--no-reference", action="store_true",
+                      help="skip the paper-faithful ipopt-reference rows")
+    nmpc.add_argument("--interpreted", action="store_true",
+                      help="do not compile derivative code (quick smoke runs; slower solves)")
+    nmpc.add_argument("--json", help="also write the figures as JSON {rows: [...]}")
+    nmpc.add_argument("--config", help="YAML file overriding MpcSettings fields")
+    nmpc.set_defaults(handler=_bench_nmpc)
+
+    bench_sim = bench_kinds.add_parser("sim", help="real-time factor and loop times in MuJoCo")
+    bench_sim.add_argument("scenarios", nargs="*", help="scenario names (default: all shipped)")
+    bench_sim.add_argument("--duration", type=float, default=5.0,
+                           help="simulated seconds per scenario")
+    bench_sim.add_argument("--executor", default="process", choices=["process", "serial"])
+    bench_sim.add_argument("--json", help="also write the rows as JSON {rows: [...]}")
+    bench_sim.add_argument("--config", help="YAML file overriding MpcSettings fields")
+    bench_sim.set_defaults(handler=_bench_sim)
+
+    bench_rec = bench_kinds.add_parser("recorder", help="flight-recorder overhead, rate, size, "
+                                       "memory")
+    bench_rec.add_argument("--scenario", default="two_go2")
+    bench_rec.add_argument("--duration", type=float, default=4.0, help="simulated s per run")
+    bench_rec.add_argument("--repeats", type=int, default=2, help="runs per configuration")
+    bench_rec.add_argument("--executor", default="process", choices=["process", "serial"])
+    bench_rec.add_argument("--memory-minutes", type=float, default=30.0,
+                           help="simulated minutes for the memory check (0: skip)")
+    bench_rec.add_argument("--json", help="also write the figures as JSON")
+    bench_rec.add_argument("--config", help="YAML file overriding MpcSettings fields")
+    bench_rec.set_defaults(handler=_bench_recorder)
+
+    bench_drv = bench_kinds.add_parser("drivers", help="latency and jitter of each driver shim "
+                                       "against its fake on loopback")
+    bench_drv.add_argument("--samples", type=int, default=2000,
+                           help="round trips per Unitree link (Go2 DDS, A1 UDP)")
+    bench_drv.add_argument("--stream-samples", type=int, default=600,
+                           help="NatNet frames and CAN samples")
+    bench_drv.add_argument("--domain", type=int, default=0, help="DDS domain id (loopback)")
+    bench_drv.add_argument("--json", help="also write the rows and the peers' counters as JSON")
+    bench_drv.set_defaults(handler=_bench_drivers)
+
+    bench_dep = bench_kinds.add_parser("deploy", help="WBC and NMPC loop timing of porter "
+                                       "deploy --backend sim per time scale")
+    bench_dep.add_argument("--config", default="two_go2",
+                           help="deploy config (path or shipped name; default two_go2)")
+    bench_dep.add_argument("--time-scales", type=float, nargs="+", default=[0.1, 1.0],
+                           help="sim.time_scale values (default 0.1 1.0)")
+    bench_dep.add_argument("--runs", type=int, default=1, help="runs per time scale")
+    bench_dep.add_argument("--duration", type=float, default=3.0,
+                           help="seconds running once armed (simulated)")
+    bench_dep.add_argument("--json", help="also write the rows as JSON")
+    bench_dep.set_defaults(handler=_bench_deploy)
+
+    sim = commands.add_parser("sim", help="run a scenario on the embedded MuJoCo backend")
+    sim.add_argument("scenario", nargs="?", default="two_go2",
+                     help="shipped scenario name or path of a scenario YAML (default two_go2)")
+    sim.add_argument("--json", help="write the summary metrics as JSON")
+    sim.add_argument("--config", help="YAML file overriding MpcSettings fields")
+    sim.add_argument("--duration", type=float, help="override the scenario's duration_s")
+    sim.add_argument("--seed", type=int, help="override the scenario's seed")
+    sim.add_argument("--mode", choices=["distributed", "centralized", "wrench-only"],
+                     help="override the scenario's controller.mode")
+    sim.add_argument("--serial", action="store_true",
+                     help="run ADMM local solves in this process instead of one per agent")
+    sim.add_argument("--delay", action="store_true",
+                     help="model computation delay (apply each plan after its solve time)")
+    sim.add_argument("--quiet", action="store_true", help="no progress bar")
+    sim.add_argument("--record", metavar="LOG.mcap",
+                     help="flight-recorder file (default runs/<scenario>-<time>.mcap)")
+    sim.add_argument("--no-record", action="store_true", help="do not write a flight log")
+    sim.add_argument("--keyframe-every", type=int, metavar="N",
+                     help="log the NMPC warm start every N updates (default 60)")
+    sim.add_argument("--rerun", nargs="?", const="spawn", metavar="TARGET",
+                     help="stream live to Rerun: spawn a viewer (default), 'connect' to a "
+                          "running one (or a rerun+http:// URL), or a FILE.rrd")
+    sim.set_defaults(handler=_sim)
+
+    deploy = commands.add_parser("deploy", help="run the team on robots (or on the simulated "
+                                 "world behind the same drivers)")
+    deploy.add_argument("--config", required=True, metavar="CONFIG.yaml",
+                        help="deploy config (deploy/config/deployments/*.yaml) or a shipped "
+                             "config's name")
+    deploy.add_argument("--backend", choices=["hw", "sim"], default="hw",
+                        help="hw: the robots; sim: MuJoCo behind fakes on loopback (default hw)")
+    deploy.add_argument("--yes", action="store_true", help="arm without asking the operator")
+    deploy.add_argument("--duration", type=float, metavar="S",
+                        help="seconds to run once armed (default: the scenario's duration_s)")
+    deploy.add_argument("--record", metavar="LOG.mcap",
+                        help="flight log (default runs/deploy-<scenario>-<time>.mcap)")
+    deploy.add_argument("--no-record", action="store_true",
+                        help="no flight log (--backend sim only)")
+    deploy.set_defaults(handler=_deploy)
+
+    replay = commands.add_parser("replay", help="play a flight log in Rerun")
+    replay.add_argument("log", help="LOG.mcap written by porter")
+    target = replay.add_mutually_exclusive_group()
+    target.add_argument("--rrd", metavar="FILE", help="write a Rerun recording instead of "
+                        "opening a viewer (headless)")
+    target.add_argument("--connect", nargs="?", const="", metavar="URL",
+                        help="send to a running viewer (default URL: Rerun's local one)")
+    replay.set_defaults(handler=_replay)
+
+    log = commands.add_parser("log", help="inspect and repair flight logs")
+    log_kinds = log.add_subparsers(dest="log_command", required=True)
+    info = log_kinds.add_parser("info", help="duration, topics, counts, summary metrics")
+    info.add_argument("log", help="LOG.mcap")
+    info.set_defaults(handler=_log_info)
+    recover = log_kinds.add_parser("recover", help="make a killed run's log readable")
+    recover.add_argument("log", help="LOG.mcap left by a run that did not close it")
+    recover.add_argument("-o", "--output", help="recovered file (default LOG.recovered.mcap)")
+    recover.set_defaults(handler=_log_recover)
+
+    regress = commands.add_parser("regress", help="re-run logged NMPC decisions and compare")
+    regress.add_argument("logs", nargs="+", metavar="LOG", help="LOG.mcap files")
+    regress.add_argument("--settings", metavar="YAML",
+                         help="MpcSettings overriding the log's attached ones (what-if)")
+    regress.add_argument("--max-decisions", type=int,
+                         help="replay only the first N decisions of each log")
+    regress.add_argument("--json", help="also write the per-log report as JSON")
+    regress.add_argument("--refresh-expectations", action="store_true",
+                         help="(re)write LOG.expect.json from each log's summary instead of "
+                              "replaying: review and commit the result deliberately")
+    regress.set_defaults(handler=_regress)
+    return parser
+
+
+def _terminate(signum: int, frame: object) -> None:
+    raise KeyboardInterrupt(f"signal {signum}")
+
+
+def main(argv: list[str] | None = None) -> int:
+    from deploy.config.files import ConfigError
+
+    args = build_parser().parse_args(argv)
+    # Outside loops that poll a StopRequest, SIGTERM unwinds like Ctrl-C: ``finally`` blocks run.
+    signal.signal(signal.SIGTERM, _terminate)
+    try:
+        return int(args.handler(args))
+    except ConfigError as error:
+        print(f"porter: {error}", file=sys.stderr)
+        return 2
+    except KeyboardInterrupt:
+        print("porter: interrupted", file=sys.stderr)
+        return 130
+
+
+if __name__ == "__main__":
+    sys.exit(main())

@@ -1,0 +1,100 @@
+"""``porter sim [SCENARIO]``: one scenario on the embedded MuJoCo backend, with a progress bar
+(simulated time, real-time factor) on stderr and the summary metrics as JSON on stdout."""
+
+from __future__ import annotations
+
+import argparse
+import json
+import sys
+from pathlib import Path
+
+from core.nmpc.settings import MpcSettings
+from deploy.config.scenario import Scenario, load_scenario
+from deploy.recording.flight_recorder import FlightRecorder, RecorderSettings
+from deploy.recording.run_record import default_log_path, open_run_recorder
+from deploy.runtime.codegen_cache import CompiledCodeCache
+from deploy.runtime.stop_request import StopRequest
+from deploy.runtime.team_loop import TeamLoop, summary_line
+
+
+def scenario_from_args(args: argparse.Namespace) -> Scenario:
+    """The scenario named on the command line with ``--duration`` / ``--mode`` / ``--seed`` /
+    ``--serial`` overrides applied."""
+    scenario = load_scenario(args.scenario)
+    update: dict = {}
+    if args.duration is not None:
+        update["duration_s"] = args.duration
+    if args.seed is not None:
+        update["seed"] = args.seed
+    controller: dict = {}
+    if args.mode is not None:
+        controller["mode"] = args.mode
+    if args.serial:
+        controller["executor"] = "serial"
+    if args.delay:
+        controller["model_computation_delay"] = True
+    if controller:
+        update["controller"] = scenario.controller.model_copy(update=controller)
+    return scenario.model_copy(update=update)
+
+
+def run_sim(args: argparse.Namespace, base_settings: MpcSettings) -> int:
+    scenario = scenario_from_args(args)
+    print(f"porter sim: scenario {scenario.name!r}, {len(scenario.team)} robots, "
+          f"{scenario.controller.mode} NMPC, {scenario.duration_s:g} s on MuJoCo "
+          "(the first start compiles the NLPs, about a minute each)", file=sys.stderr)
+    loop = TeamLoop(scenario, CompiledCodeCache(), base_settings)
+    recorder: FlightRecorder | None = None
+    if not args.no_record:
+        path = Path(args.record) if args.record else default_log_path(scenario)
+        settings = RecorderSettings()
+        if getattr(args, "keyframe_every", None):
+            settings = settings.model_copy(update={"warm_start_every": args.keyframe_every})
+        recorder = open_run_recorder(path, scenario, loop.settings, loop.wbc_settings, "mujoco",
+                                     settings, sinks=live_view_sinks(args, scenario))
+        loop.attach_recorder(recorder)
+        print(f"porter sim: recording to {path}", file=sys.stderr)
+    show = not args.quiet
+
+    def progress(time_s: float, duration_s: float, wall_s: float) -> None:
+        if show:
+            print("\r" + summary_line(time_s, duration_s, wall_s), end="", file=sys.stderr,
+                  flush=True)
+
+    summary: dict | None = None
+    stop = StopRequest()
+    try:
+        with stop.installed():
+            summary = loop.run(progress, stop)
+    finally:  # Ctrl-C, SIGTERM (raised as KeyboardInterrupt by the CLI) and errors alike
+        loop.close()
+        if recorder is not None:
+            recorder.close(summary)
+            if recorder.dropped:
+                print(f"porter sim: the recorder dropped {recorder.dropped} messages",
+                      file=sys.stderr)
+    if show:
+        print(file=sys.stderr)
+    assert summary is not None
+    text = json.dumps(summary, indent=2)
+    print(text)
+    if args.json:
+        Path(args.json).write_text(text + "\n")
+        print(f"wrote {args.json}", file=sys.stderr)
+    verdict = ("reached the goal" if summary["reached_goal"] else "did NOT reach the goal")
+    print(f"porter sim: {verdict}; falls {summary['falls']}; min h {summary['min_h_m']}",
+          file=sys.stderr)
+    if stop():
+        print(f"porter sim: stopped by {stop.reason} at {summary['duration_s']:.2f} s",
+              file=sys.stderr)
+        return 130
+    return 0
+
+
+def live_view_sinks(args: argparse.Namespace, scenario: Scenario) -> list:
+    """``--rerun``: stream every recorded message to a Rerun viewer as it is written."""
+    if not getattr(args, "rerun", None):
+        return []
+    from deploy.viewing.rerun_view import live_sink
+
+    return [live_sink(args.rerun, scenario.name)]

@@ -1,0 +1,58 @@
+"""Typed scenario and deploy configs, their YAML loading and the shipped files.
+
+Names load on first use (``core.lazy_exports``), so importing the package imports nothing
+else.
+"""
+
+from __future__ import annotations
+
+from typing import TYPE_CHECKING
+
+from core.lazy_exports import lazy_exports
+
+if TYPE_CHECKING:
+    from deploy.config.deploy_config import (
+        A1Link,
+        CanConfig,
+        DeployConfig,
+        Go2Link,
+        MocapConfig,
+        PostureConfig,
+        PreflightConfig,
+        RatesConfig,
+        SimConfig,
+        SimFault,
+        config_path,
+        load_deploy_config,
+    )
+    from deploy.config.files import ConfigError, load_settings, validate_settings
+    from deploy.config.scenario import (
+        ControllerSpec,
+        DisturbanceSettings,
+        GaitSpec,
+        ObstacleSpec,
+        PayloadSpec,
+        PushSpec,
+        ReferenceSpec,
+        Scenario,
+        load_scenario,
+        scenario_path,
+        shipped_scenarios,
+    )
+
+_SOURCES = {
+    "deploy.config.deploy_config": ["Go2Link", "A1Link", "MocapConfig", "CanConfig",
+        "PostureConfig", "RatesConfig", "PreflightConfig", "SimFault", "SimConfig", "DeployConfig",
+        "config_path", "load_deploy_config"],
+    "deploy.config.files": ["ConfigError", "load_settings", "validate_settings"],
+    "deploy.config.scenario": ["ObstacleSpec", "PushSpec", "DisturbanceSettings", "ReferenceSpec",
+        "PayloadSpec", "ControllerSpec", "GaitSpec", "Scenario", "shipped_scenarios",
+        "scenario_path", "load_scenario"],
+}
+__all__ = ["A1Link", "CanConfig", "ConfigError", "ControllerSpec", "DeployConfig",
+           "DisturbanceSettings", "GaitSpec", "Go2Link", "MocapConfig", "ObstacleSpec",
+           "PayloadSpec", "PostureConfig", "PreflightConfig", "PushSpec", "RatesConfig",
+           "ReferenceSpec", "Scenario", "SimConfig", "SimFault", "config_path",
+           "load_deploy_config", "load_scenario", "load_settings", "scenario_path",
+           "shipped_scenarios", "validate_settings"]
+__getattr__ = lazy_exports(__name__, _SOURCES)

@@ -1,0 +1,264 @@
+"""``porter deploy`` configuration: which scenario, which robots on which links, MoCap, CAN,
+safety thresholds, posture timing, loop rates, recorder, and the ``--backend sim`` world.
+
+One YAML file per team (``deploy/config/deployments/``), validated here; unknown fields are errors and
+every error names the file and the dotted path of the bad field (``deploy.config.files``).
+The scenario (a shipped name or a YAML path, relative paths from the config's directory)
+supplies the team, payload, obstacles, reference, gait and controller; ``robots`` must name
+exactly the scenario's team.
+
+Network: nothing binds beyond loopback unless ``network_interface`` names an interface
+(e.g. ``enp3s0``): with it None, DDS runs on ``lo`` and every local IP address (A1 UDP,
+NatNet) must be a loopback address (127.0.0.0/8). Units: SI, rates in Hz, times in seconds.
+"""
+
+from __future__ import annotations
+
+import ipaddress
+from pathlib import Path
+from typing import Annotated, Literal
+
+from pydantic import BaseModel, ConfigDict, Field, ValidationError, model_validator
+from pydantic_core import InitErrorDetails, PydanticCustomError
+
+from core.model.conventions import PAYLOAD_NAME
+from deploy.config.files import ConfigError, load_settings
+from deploy.config.scenario import Scenario, load_scenario, scenario_path, shipped_scenarios
+from deploy.recording.flight_recorder import RecorderSettings
+from deploy.safety.supervisor import SupervisorSettings
+from drivers.natnet.protocol import COMMAND_PORT, DATA_PORT, MULTICAST_GROUP
+
+CONFIG_DIR = Path(__file__).parent / "deployments"
+
+
+class _Strict(BaseModel):
+    model_config = ConfigDict(extra="forbid", frozen=True)
+
+
+class Go2Link(_Strict):
+    """A Go2 over CycloneDDS (``drivers.unitree.go2_driver``): ``<topic_prefix>/rt/lowstate`` etc."""
+
+    driver: Literal["go2"]
+    domain_id: int = Field(0, ge=0, le=232)
+    topic_prefix: str = ""  # "" = the robot's own rt/lowcmd, rt/lowstate
+    release_sport_mode: bool = True  # ask the motion switcher before low-level control
+    link_timeout_s: float = Field(0.1, gt=0)
+    contact_threshold_n: float = Field(20.0, ge=0)
+    foot_force_n_per_count: float = Field(1.0, gt=0)  # UNVERIFIED scale of the raw counts
+
+
+class A1Link(_Strict):
+    """An A1 over UDP (``drivers.unitree.a1_driver``, unitree_legged_sdk 3.3 low level)."""
+
+    driver: Literal["a1"]
+    robot_address: tuple[str, int] = ("192.168.123.10", 8007)
+    local_address: str = "127.0.0.1"  # must be on the robot's network to reach it
+    local_port: int = Field(8080, ge=0, le=65535)  # 0: any free port
+    link_timeout_s: float = Field(0.1, gt=0)
+    contact_threshold_n: float = Field(20.0, ge=0)
+    foot_force_n_per_count: float = Field(1.0, gt=0)
+
+
+RobotLink = Annotated[Go2Link | A1Link, Field(discriminator="driver")]
+
+
+class MocapConfig(_Strict):
+    """OptiTrack NatNet (``drivers.natnet.client``). ``bodies`` maps porter's names (robot
+    names, ``payload``) to Motive rigid-body names (default: the same name); ``body_ids`` maps
+    Motive names to streaming ids (None: learnt from MODELDEF). The rigid body's pivot must be
+    the trunk origin (URDF root link) of each robot and the payload box centre."""
+
+    server_address: str = "127.0.0.1"
+    local_address: str = "127.0.0.1"  # interface to bind / join the multicast group on
+    command_port: int = Field(COMMAND_PORT, ge=0, le=65535)
+    data_port: int = Field(DATA_PORT, ge=0, le=65535)
+    multicast: bool = False
+    multicast_group: str = MULTICAST_GROUP
+    bodies: dict[str, str] = {}
+    body_ids: dict[str, int] | None = None
+    obstacle_bodies: list[str | None] = []  # per scenario obstacle: a body whose position is used
+    stale_timeout_s: float = Field(0.1, gt=0)
+    velocity_window_s: float = Field(0.08, gt=0)  # least-squares velocity from poses this old
+
+
+class CanConfig(_Strict):
+    """python-can bus of the e-stop heartbeat and the coupling F/T sensors."""
+
+    interface: str = "socketcan"
+    channel: str = "can0"
+    force_torque: bool = True  # F/T sensors present: robot i of ``robots:`` is sensor i
+
+
+class PostureConfig(_Strict):
+    """Stand up / sit down: joint PD targets interpolated (smoothstep) between the measured
+    posture and the SRDF standing posture, or the sitting posture (base lowered by
+    ``sit_lowering_m`` with the feet in place)."""
+
+    stand_up_s: float = Field(2.5, gt=0)
+    sit_down_s: float = Field(2.0, gt=0)
+    settle_s: float = Field(0.5, ge=0)  # hold standing before arming
+    sit_lowering_m: float = Field(0.1, ge=0.0, le=0.2)
+    kp: float = Field(60.0, gt=0)  # [N m/rad]
+    kd: float = Field(3.0, ge=0)  # [N m s/rad]
+    final_damping_s: float = Field(0.5, ge=0)  # damping after sitting down, before exit
+
+
+class RatesConfig(_Strict):
+    wbc_hz: float = Field(500.0, gt=0)
+    nmpc_hz: float = Field(60.0, gt=0)
+    max_plan_age_s: float = Field(0.25, gt=0)  # older active plan while running: safe stop
+
+
+class PreflightConfig(_Strict):
+    timeout_s: float = Field(5.0, gt=0)  # wait this long for every link before reporting
+    max_joint_velocity_rad_s: float = Field(1.0, gt=0)  # robots must be at rest
+    start_tolerance_m: float = Field(0.3, gt=0)  # payload this close to the scenario's start
+
+
+class SimFault(_Strict):
+    """A fault the simulated world injects ``at_s`` simulated seconds after it starts running
+    (tests and drills of the safety stop): ``estop_press`` (the CAN node's heartbeats say
+    "stopped"), ``heartbeat_loss`` (they stop), ``mocap_loss`` (NatNet frames stop),
+    ``robot_silent`` (``robot``'s fake stops publishing its state)."""
+
+    at_s: float = Field(ge=0)
+    kind: Literal["estop_press", "heartbeat_loss", "mocap_loss", "robot_silent"]
+    robot: str | None = None
+
+    @model_validator(mode="after")
+    def _robot_iff_silent(self) -> SimFault:
+        if (self.kind == "robot_silent") != (self.robot is not None):
+            raise ValueError("robot: name the robot for robot_silent, and only for it")
+        return self
+
+
+class SimConfig(_Strict):
+    """``--backend sim`` only: the MuJoCo world behind the fakes (``deploy.sim_backend.backend``)."""
+
+    # simulated seconds per wall-clock second, for the world and for the loop's clock (which
+    # the sim backend scales alike): 1 = real time; below 1 a slow-motion run for machines too
+    # slow for real time (every rate, timeout and budget is then in simulated seconds)
+    time_scale: float = Field(1.0, gt=0, le=1.0)
+    mocap_rate_hz: float = Field(120.0, gt=0)
+    mocap_latency_s: float = Field(0.0, ge=0)
+    mocap_dropout_probability: float = Field(0.0, ge=0, le=1)
+    force_torque_rate_hz: float = Field(100.0, gt=0)
+    state_rate_hz: float = Field(500.0, gt=0)  # LowState per robot (Go2: 500 Hz)
+    start_lowering_m: float = Field(0.1, ge=0.0, le=0.2)  # robots start crouched this much
+    # ``safety`` fields replaced for this backend only (e.g. budgets this machine cannot meet)
+    safety_overrides: dict[str, float | int] = {}
+    # faults for tests: what the fake world leaves out
+    can_node: bool = True  # False: no e-stop heartbeat, no F/T
+    untracked_bodies: list[str] = []  # streamed with tracking invalid (Motive lost them)
+    silent_robots: list[str] = []  # their fakes never publish a state
+    faults: list[SimFault] = []  # injected while running (see SimFault)
+
+
+class DeployConfig(_Strict):
+    """One team's deployment. See the module docstring for the network rule."""
+
+    scenario: str
+    network_interface: str | None = None
+    robots: dict[str, RobotLink]
+    mocap: MocapConfig = MocapConfig()
+    can: CanConfig = CanConfig()
+    safety: SupervisorSettings = SupervisorSettings()
+    posture: PostureConfig = PostureConfig()
+    rates: RatesConfig = RatesConfig()
+    preflight: PreflightConfig = PreflightConfig()
+    recorder: RecorderSettings = RecorderSettings()
+    sim: SimConfig = SimConfig()
+
+    @model_validator(mode="after")
+    def _valid_sim_safety(self) -> DeployConfig:
+        try:
+            self.sim_safety()
+        except ValidationError as error:
+            raise ValidationError.from_exception_data(type(self).__name__, [
+                InitErrorDetails(type=PydanticCustomError("safety", "{message}", {
+                    "message": item["msg"]}), loc=("sim", "safety_overrides", *item["loc"]),
+                    input=item["input"]) for item in error.errors()]) from None
+        return self
+
+    def sim_safety(self) -> SupervisorSettings:
+        """``safety`` with ``sim.safety_overrides`` applied (``--backend sim``)."""
+        return SupervisorSettings.model_validate({**self.safety.model_dump(),
+                                                  **self.sim.safety_overrides})
+
+    @model_validator(mode="after")
+    def _loopback_unless_interface(self) -> DeployConfig:
+        if self.network_interface is not None:
+            return self
+        problems: list[tuple[tuple[str, ...], str]] = []
+        for name, link in self.robots.items():
+            if isinstance(link, A1Link) and not _is_loopback(link.local_address):
+                problems.append((("robots", name, "local_address"), link.local_address))
+        if not _is_loopback(self.mocap.local_address):
+            problems.append((("mocap", "local_address"), self.mocap.local_address))
+        if problems:
+            raise ValidationError.from_exception_data(type(self).__name__, [
+                InitErrorDetails(type=PydanticCustomError(
+                    "network", "{address} is not a loopback address: set network_interface "
+                    "to bind beyond loopback", {"address": address}), loc=loc, input=address)
+                for loc, address in problems])
+        return self
+
+    def body_name(self, name: str) -> str:
+        """Motive's rigid-body name of porter's body ``name`` (a robot or ``payload``)."""
+        return self.mocap.bodies.get(name, name)
+
+
+def _is_loopback(address: str) -> bool:
+    try:
+        return ipaddress.ip_address(address).is_loopback
+    except ValueError:
+        return address == "localhost"
+
+
+def config_path(path_or_name: Path | str) -> Path:
+    """A shipped config's name (``two_go2``) or a path."""
+    path = Path(path_or_name)
+    if path.suffix in (".yaml", ".yml") or path.exists() or "/" in str(path_or_name):
+        return path
+    return CONFIG_DIR / f"{path_or_name}.yaml"
+
+
+def load_deploy_config(path_or_name: Path | str) -> tuple[DeployConfig, Scenario]:
+    """The config and its scenario, cross-checked (robots = the scenario's team, one MoCap
+    obstacle entry at most per obstacle). Raises ``ConfigError`` naming the field."""
+    path = config_path(path_or_name)
+    config = load_settings(path, DeployConfig)
+    reference = Path(config.scenario)
+    relative = path.parent / reference
+    if reference.suffix in (".yaml", ".yml") and not reference.is_absolute() \
+            and not reference.exists() and relative.exists():
+        reference = relative
+    try:
+        scenario = load_scenario(reference if reference.suffix else config.scenario)
+    except ConfigError as error:
+        raise ConfigError(f"{path}: scenario: {error} (shipped: "
+                          f"{', '.join(shipped_scenarios())})") from None
+    team = [agent.name for agent in scenario.team]
+    if sorted(config.robots) != sorted(team):
+        missing = [name for name in team if name not in config.robots]
+        extra = [name for name in config.robots if name not in team]
+        raise ConfigError(f"{path}: robots: must name the scenario's team {team} "
+                          f"(scenario {scenario_path(config.scenario)}); missing {missing}, "
+                          f"unknown {extra}")
+    for name, link in config.robots.items():
+        robot_type = next(agent.robot_type for agent in scenario.team if agent.name == name)
+        if link.driver != robot_type:
+            raise ConfigError(f"{path}: robots.{name}.driver: {link.driver!r} but the "
+                              f"scenario's {name} is a {robot_type!r}")
+    if len(config.mocap.obstacle_bodies) > len(scenario.obstacles):
+        raise ConfigError(f"{path}: mocap.obstacle_bodies: {len(config.mocap.obstacle_bodies)}"
+                          f" entries for {len(scenario.obstacles)} scenario obstacles")
+    for field_name, names in (("sim.untracked_bodies", config.sim.untracked_bodies),
+                              ("sim.silent_robots", config.sim.silent_robots),
+                              ("sim.faults.robot", [f.robot for f in config.sim.faults
+                                                    if f.robot is not None])):
+        known = [*team, PAYLOAD_NAME] if field_name == "sim.untracked_bodies" else team
+        unknown = [name for name in names if name not in known]
+        if unknown:
+            raise ConfigError(f"{path}: {field_name}: unknown {unknown}; known {known}")
+    return config, scenario

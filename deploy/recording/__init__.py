@@ -1,0 +1,77 @@
+"""The flight log: MCAP recorder, message format, reader, expectations and regression.
+
+Names load on first use (``core.lazy_exports``), so importing the package imports nothing
+else.
+"""
+
+from __future__ import annotations
+
+from typing import TYPE_CHECKING
+
+from core.lazy_exports import lazy_exports
+
+if TYPE_CHECKING:
+    from deploy.recording.expectations import check_expectations, draft_expectations, expectations_path
+    from deploy.recording.flight_recorder import FlightRecorder, RecorderSettings
+    from deploy.recording.log_format import (
+        array,
+        as_list,
+        frame_transforms,
+        from_array,
+        joint_command,
+        mocap_messages,
+        mocap_topic,
+        obstacle_scene,
+        payload_box,
+        pose_in_frame,
+        robot_state,
+        robot_topic,
+        timestamp,
+        to_nanoseconds,
+    )
+    from deploy.recording.log_reader import DecodedMessage, LogError, LogFile, Recovery, recover
+    from deploy.recording.loop_recording import LoopRecording, update_message, warm_start_message
+    from deploy.recording.regression import (
+        LogRegression,
+        compare,
+        controller_from_log,
+        format_report,
+        inputs_from_message,
+        memory_from_message,
+        refresh_expectations,
+        regress_log,
+        run_regress,
+    )
+    from deploy.recording.run_record import (
+        default_log_path,
+        git_revision,
+        open_run_recorder,
+        run_attachments,
+        run_metadata,
+    )
+
+_SOURCES = {
+    "deploy.recording.expectations": ["expectations_path", "check_expectations",
+        "draft_expectations"],
+    "deploy.recording.flight_recorder": ["RecorderSettings", "FlightRecorder"],
+    "deploy.recording.log_format": ["robot_topic", "mocap_topic", "to_nanoseconds", "timestamp",
+        "array", "from_array", "robot_state", "joint_command", "as_list", "pose_in_frame",
+        "frame_transforms", "mocap_messages", "obstacle_scene", "payload_box"],
+    "deploy.recording.log_reader": ["LogError", "DecodedMessage", "LogFile", "Recovery", "recover"],
+    "deploy.recording.loop_recording": ["LoopRecording", "update_message", "warm_start_message"],
+    "deploy.recording.regression": ["LogRegression", "controller_from_log", "inputs_from_message",
+        "memory_from_message", "compare", "regress_log", "format_report", "refresh_expectations",
+        "run_regress"],
+    "deploy.recording.run_record": ["git_revision", "run_metadata", "run_attachments",
+        "open_run_recorder", "default_log_path"],
+}
+__all__ = ["DecodedMessage", "FlightRecorder", "LogError", "LogFile", "LogRegression",
+           "LoopRecording", "RecorderSettings", "Recovery", "array", "as_list",
+           "check_expectations", "compare", "controller_from_log", "default_log_path",
+           "draft_expectations", "expectations_path", "format_report", "frame_transforms",
+           "from_array", "git_revision", "inputs_from_message", "joint_command",
+           "memory_from_message", "mocap_messages", "mocap_topic", "obstacle_scene",
+           "open_run_recorder", "payload_box", "pose_in_frame", "recover", "refresh_expectations",
+           "regress_log", "robot_state", "robot_topic", "run_attachments", "run_metadata",
+           "run_regress", "timestamp", "to_nanoseconds", "update_message", "warm_start_message"]
+__getattr__ = lazy_exports(__name__, _SOURCES)

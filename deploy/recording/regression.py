@@ -1,0 +1,244 @@
+"""``porter regress LOG...``: re-run every logged NMPC decision and compare with the log.
+
+For each log: rebuild the controller from the log's attached scenario and effective NMPC
+settings (or ``--settings``), then for every decision in order restore the warm-start keyframe
+when one was logged for it, feed the logged ``MpcInputs`` and compare the outputs with the
+logged ones: first-stage GRFs and wrenches, predicted payload (with ADMM: the consensus) and
+robot trajectories and wrenches (with ADMM: each robot's own local solution), ADMM residuals
+per iteration, and every solve's status.
+Between keyframes the warm start is the replayed previous decision, which is exact as long as
+the replay is. Then the log's summary metrics are checked against the expectations stored next to it
+(``LOG.expect.json``). Exit code 1 when anything is outside its tolerance.
+"""
+
+from __future__ import annotations
+
+import argparse
+import json
+import math
+import sys
+from dataclasses import asdict, dataclass, field
+from pathlib import Path
+
+import numpy as np
+import yaml
+
+from core.model.team import TeamModel
+from core.model.team_settings import TeamSettings
+from core.nmpc.admm_mpc import DistributedMpc
+from core.nmpc.centralized_mpc import CentralizedMpc
+from core.nmpc.mpc_inputs import MpcInputs
+from core.nmpc.mpc_plan import MpcPlan
+from core.nmpc.nlp_solver import NlpSolution, SolveStats
+from core.nmpc.settings import MpcSettings
+from core.nmpc.warm_start import ControllerMemory
+from deploy.config.files import ConfigError, load_settings, validate_settings
+from deploy.recording import log_format as fmt
+from deploy.recording.expectations import check_expectations, draft_expectations, expectations_path
+from deploy.recording.log_reader import LogError, LogFile
+from deploy.recording.messages import porter_log_pb2 as pb
+from deploy.runtime.codegen_cache import CompiledCodeCache
+from drivers.robot_descriptions import srb_parameters
+
+# Tolerances of a replay. The same compiled solver on the same inputs is deterministic only up
+# to the last bits (measured: 0 on one machine, 2.2e-16 relative dual residual on another);
+# the tolerances absorb floating-point differences between machines (BLAS kernels,
+# compilers) that may change an interior-point iteration count, so they sit near the
+# solver's tolerance. Doubling one cost weight deviates by 100x to 1000x more
+# (measured: GRF 2.7 N, payload trajectory 2 cm, relative dual residual 0.3).
+# Absolute [N, N m, m, mixed units of the residuals] except the relative dual residual.
+TOLERANCES = {"grf_n": 0.02, "wrench": 0.02, "payload_trajectory": 1e-4,
+              "robot_trajectories": 1e-4, "wrench_trajectories": 0.02, "admm_primal": 1e-3,
+              "admm_dual_relative": 1e-3}
+
+
+@dataclass
+class LogRegression:
+    """One log's replay: max absolute deviation per quantity, status mismatches, verdict."""
+
+    log: str
+    decisions: int = 0
+    keyframes: int = 0
+    max_deviation: dict[str, float] = field(default_factory=lambda: dict.fromkeys(TOLERANCES, 0.0))
+    status_mismatches: int = 0
+    first_failure: str = ""
+    expectation_failures: list[str] = field(default_factory=list)
+
+    @property
+    def passed(self) -> bool:
+        within = all(self.max_deviation[k] <= TOLERANCES[k] for k in TOLERANCES)
+        return (within and self.status_mismatches == 0 and self.decisions > 0
+                and not self.expectation_failures)
+
+
+def controller_from_log(log: LogFile, cache: CompiledCodeCache,
+                        settings: MpcSettings | None = None
+                        ) -> tuple[CentralizedMpc | DistributedMpc, TeamModel]:
+    """The NMPC the log's run used, rebuilt from its attachments (serial ADMM executor)."""
+    scenario = yaml.safe_load(log.attachment_text(fmt.SCENARIO_ATTACHMENT))
+    try:  # only the team and the mode: a run may be shorter than its scenario file's check
+        team_settings = TeamSettings.model_validate({"agents": scenario["team"], "payload": {
+            "mass_kg": scenario["payload"]["mass_kg"], "size_m": scenario["payload"]["size_m"]}})
+        mode = scenario["controller"]["mode"]
+    except (KeyError, TypeError, ValueError) as error:
+        raise LogError(f"{log.path}: attached scenario is unusable ({error})") from None
+    if settings is None:
+        settings = validate_settings(yaml.safe_load(log.attachment_text(
+            fmt.MPC_SETTINGS_ATTACHMENT)), MpcSettings, source=f"{log.path}: mpc_settings")
+    team = TeamModel.from_settings(team_settings, srb_parameters)
+    if mode == "centralized":
+        return CentralizedMpc(team, settings, compiler=cache), team
+    return DistributedMpc(team, settings, compiler=cache), team
+
+
+def inputs_from_message(message: pb.NmpcInputs) -> MpcInputs:
+    a = fmt.from_array
+    return MpcInputs(a(message.robot_states), a(message.payload_state),
+                     a(message.robot_references), a(message.payload_reference),
+                     a(message.feet_positions), a(message.contacts),
+                     a(message.obstacles).reshape(-1, 5))
+
+
+def memory_from_message(message: pb.WarmStart) -> ControllerMemory:
+    a = fmt.from_array
+    no_stats = SolveStats("logged", True, 0, 0.0, math.nan, 0.0)
+    previous = [NlpSolution(a(agent.decision), a(agent.constraint_multipliers),
+                            a(agent.bound_multipliers), no_stats) if agent.present else None
+                for agent in message.agents]
+    return ControllerMemory(previous, a(message.consensus) if message.has_consensus else None,
+                            a(message.duals) if message.has_consensus else None)
+
+
+def compare(report: LogRegression, update: int, plan: MpcPlan, logged: pb.NmpcUpdate,
+            iterations: list[pb.AdmmIteration]) -> None:
+    """Fold one decision's deviations into ``report``."""
+    a = fmt.from_array
+    pairs = {"grf_n": (plan.grf, a(logged.grf)), "wrench": (plan.wrench, a(logged.wrench)),
+             "payload_trajectory": (plan.payload_trajectory, a(logged.payload_trajectory)),
+             "robot_trajectories": (plan.robot_trajectories, a(logged.robot_trajectories))}
+    pairs["wrench_trajectories"] = (plan.wrench_trajectories, a(logged.wrench_trajectories))
+    for r, (replayed, recorded) in enumerate(zip(plan.admm_iterations, iterations,
+                                                 strict=False)):
+        _fold(report, "admm_primal", np.concatenate([replayed.primal_payload_rms,
+                                                     replayed.primal_wrench_rms]),
+              np.concatenate([recorded.primal_payload_rms, recorded.primal_wrench_rms]), update,
+              r)
+        scale = max(abs(recorded.dual_norm), 1.0)
+        _fold(report, "admm_dual_relative", np.array([replayed.dual_norm / scale]),
+              np.array([recorded.dual_norm / scale]), update, r)
+    for key, (ours, theirs) in pairs.items():
+        _fold(report, key, ours, theirs, update)
+    logged_status = [(s.status, s.success) for s in logged.solves]
+    replay_status = [(s.status, s.success) for s in plan.solves]
+    if len(plan.admm_iterations) != len(iterations) or logged_status != replay_status:
+        report.status_mismatches += 1
+        if not report.first_failure:
+            report.first_failure = (f"update {update}: solver status {replay_status} vs "
+                                    f"logged {logged_status}")
+
+
+def _fold(report: LogRegression, key: str, ours: np.ndarray, theirs: np.ndarray, update: int,
+          iteration: int | None = None) -> None:
+    ours, theirs = np.asarray(ours, float), np.asarray(theirs, float)
+    deviation = (math.inf if ours.shape != theirs.shape
+                 else float(np.max(np.abs(ours - theirs), initial=0.0)))
+    if not math.isfinite(deviation) and ours.shape == theirs.shape \
+            and np.array_equal(np.isfinite(ours), np.isfinite(theirs)):
+        deviation = 0.0
+    report.max_deviation[key] = max(report.max_deviation[key], deviation)
+    if deviation > TOLERANCES[key] and not report.first_failure:
+        where = f"update {update}" + ("" if iteration is None else f", ADMM iteration {iteration}")
+        report.first_failure = f"{where}: {key} deviates by {deviation:.3g}"
+
+
+def regress_log(path: Path | str, cache: CompiledCodeCache | None = None,
+                settings: MpcSettings | None = None,
+                max_decisions: int | None = None) -> LogRegression:
+    log = LogFile(path)
+    report = LogRegression(str(path))
+    controller, _ = controller_from_log(log, cache or CompiledCodeCache(), settings)
+    topics = log.by_topic([fmt.NMPC_INPUTS, fmt.NMPC_WARM_START, fmt.NMPC_UPDATE, fmt.ADMM])
+    inputs = {m.message.update: m.message for m in topics[fmt.NMPC_INPUTS]}
+    keyframes = {m.message.update: m.message for m in topics[fmt.NMPC_WARM_START]}
+    updates = {m.message.update: m.message for m in topics[fmt.NMPC_UPDATE]}
+    admm: dict[int, list[pb.AdmmIteration]] = {}
+    for m in topics[fmt.ADMM]:
+        admm.setdefault(m.message.update, []).append(m.message)
+    previous: int | None = None
+    try:
+        for update in sorted(inputs):
+            if max_decisions is not None and report.decisions >= max_decisions:
+                break
+            if update in keyframes:
+                controller.restore(memory_from_message(keyframes[update]))
+                report.keyframes += 1
+            elif previous is None or update != previous + 1 or update not in updates:
+                previous = None  # a gap: wait for the next keyframe
+                continue
+            if update not in updates:
+                continue
+            plan = controller.update(inputs_from_message(inputs[update]))
+            iterations = sorted(admm.get(update, []), key=lambda m: m.iteration)
+            compare(report, update, plan, updates[update], iterations)
+            report.decisions += 1
+            previous = update
+    finally:
+        if isinstance(controller, DistributedMpc):
+            controller.close()
+    expected = expectations_path(Path(path))
+    if expected.exists():
+        report.expectation_failures = check_expectations(log.summary(), expected)
+    return report
+
+
+def format_report(report: LogRegression) -> str:
+    verdict = "PASS" if report.passed else "FAIL"
+    lines = [f"{verdict} {report.log}: {report.decisions} decisions replayed "
+             f"({report.keyframes} keyframes), {report.status_mismatches} status mismatches"]
+    lines.append(f"  {'quantity':20s} {'max deviation':>14s} {'tolerance':>10s}")
+    for key, tolerance in TOLERANCES.items():
+        mark = "" if report.max_deviation[key] <= tolerance else "  <-- exceeds"
+        lines.append(f"  {key:20s} {report.max_deviation[key]:14.3g} {tolerance:10.1g}{mark}")
+    if report.first_failure:
+        lines.append(f"  first failure: {report.first_failure}")
+    lines.extend(f"  expectation: {failure}" for failure in report.expectation_failures)
+    return "\n".join(lines)
+
+
+def refresh_expectations(paths: list[str]) -> int:
+    for path in paths:
+        try:
+            summary = LogFile(path).summary()
+        except LogError as error:
+            print(f"porter: {error}", file=sys.stderr)
+            return 2
+        if summary is None:
+            print(f"porter: {path}: no summary metrics to draft expectations from",
+                  file=sys.stderr)
+            return 2
+        target = expectations_path(Path(path))
+        target.write_text(json.dumps(draft_expectations(summary), indent=2) + "\n")
+        print(f"wrote {target}: review the bands, then commit it")
+    return 0
+
+
+def run_regress(args: argparse.Namespace) -> int:
+    if args.refresh_expectations:
+        return refresh_expectations(args.logs)
+    settings = load_settings(args.settings, MpcSettings) if args.settings else None
+    cache = CompiledCodeCache()
+    reports = []
+    for path in args.logs:
+        try:
+            report = regress_log(path, cache, settings, args.max_decisions)
+        except (LogError, ConfigError) as error:
+            print(f"porter: {error}", file=sys.stderr)
+            return 2
+        print(format_report(report))
+        reports.append(report)
+    if args.json:
+        Path(args.json).write_text(json.dumps(
+            [asdict(r) | {"passed": r.passed} for r in reports], indent=2) + "\n")
+    failed = [r for r in reports if not r.passed]
+    print(f"porter regress: {len(reports) - len(failed)} of {len(reports)} logs pass")
+    return 1 if failed else 0

@@ -1,0 +1,255 @@
+"""The team's control logic, shared by the simulated loop (``deploy.runtime.team_loop``) and the robots
+(``deploy.runtime.deploy_loop``): NMPC inputs from measured data, the NMPC, and each robot's WBC tick.
+
+No I/O and no waiting: callers read the drivers and the MoCap, pass the measurements in, and
+send the returned joint commands. World frame, SI units; times in seconds on the caller's
+clock. ``start_s`` is the time at which the team starts (the run's t = 0): the team stands
+still (all feet down, reference held) for ``SETTLE_S`` after it, then the gait and the
+reference start.
+
+NMPC inputs (``nmpc_inputs``): robot SRB states from the MoCap pose and the robot's own twist
+and joints, the payload state from ``PayloadEstimator`` (never ground truth), references,
+trot contact schedule and Raibert footholds, obstacles at the current time.
+WBC (``wbc_steps``): the plan interpolated at the tick's time, gait stance flags and swing-foot
+targets, the QP's torques sent as ``tau + kd (dq + qdd dt - dq)`` with a small damping kd.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+import numpy as np
+
+from core.estimation.payload_estimator import PayloadEstimator
+from core.locomotion.gait import TrotGait
+from core.locomotion.plan_tracking import LegCoordinator, wbc_target
+from core.locomotion.settings import WbcSettings
+from core.locomotion.whole_body_control import FloatingBaseState, WbcOutput, WholeBodyController
+from core.model.obstacles import Obstacle
+from core.model.team import TeamModel
+from core.nmpc.admm_executor import LocalSolverSpec
+from core.nmpc.admm_mpc import DistributedMpc
+from core.nmpc.centralized_mpc import CentralizedMpc
+from core.nmpc.delay_compensation import predict_states
+from core.nmpc.mpc_inputs import MpcInputs
+from core.nmpc.mpc_plan import MpcPlan
+from core.nmpc.reference import horizon_references
+from core.nmpc.settings import MpcSettings
+from deploy.config.scenario import Scenario
+from deploy.runtime.codegen_cache import CompiledCodeCache
+from deploy.runtime.process_executor import ProcessExecutor
+from drivers.interfaces import JointCommand, MocapFrame, RobotMeasurement
+from drivers.robot_descriptions import (
+    FOOT_RADIUS_M,
+    load_pinocchio_model,
+    srb_parameters,
+    standing_configuration,
+)
+
+SETTLE_S = 0.3  # standing (all feet down) before the gait starts and the reference moves
+WBC_TICK_S = 0.002  # 500 Hz
+
+
+@dataclass
+class RobotControl:
+    """One robot's controller parts: its WBC and its gait bookkeeping."""
+
+    name: str
+    robot_type: str
+    wbc: WholeBodyController
+    legs: LegCoordinator
+
+
+@dataclass(frozen=True)
+class NmpcDecision:
+    """What one NMPC update starts from: its inputs, the MoCap frame and payload estimate
+    (12,) they were built from, at ``time_s``."""
+
+    time_s: float
+    inputs: MpcInputs
+    frame: MocapFrame
+    payload_estimate: np.ndarray
+
+
+@dataclass(frozen=True)
+class WbcStep:
+    """One robot's WBC tick: the joint command to send, the QP output, the gait's stance
+    flags (4,) and the foot position targets [m] (4, 3), world frame."""
+
+    command: JointCommand
+    output: WbcOutput
+    stance: np.ndarray
+    foot_targets_m: np.ndarray
+
+
+def measurement_state(measurement: RobotMeasurement) -> FloatingBaseState:
+    """The WBC's floating-base state from a robot's own sensors."""
+    return FloatingBaseState(
+        measurement.position_in_world_m, measurement.quaternion_wxyz,
+        measurement.linear_velocity_in_world_m_s, measurement.angular_velocity_in_body_rad_s,
+        measurement.position_rad, measurement.velocity_rad_s)
+
+
+def mocap_state(measurement: RobotMeasurement, frame: MocapFrame, name: str) -> FloatingBaseState:
+    """Pose from the MoCap frame, twist and joints from the robot (as on hardware)."""
+    position, quaternion = frame.poses[name]
+    return FloatingBaseState(position, quaternion, measurement.linear_velocity_in_world_m_s,
+                             measurement.angular_velocity_in_body_rad_s,
+                             measurement.position_rad, measurement.velocity_rad_s)
+
+
+class TeamController:
+    """Build once per run from a scenario; ``reset`` at the standing start, then call
+    ``nmpc_inputs`` + ``controller.update`` at NMPC instants and ``wbc_steps`` every tick.
+
+    ``controller.update`` may run in another thread than the rest, provided the caller never
+    builds inputs or reads ``controller.memory()`` while an update is in flight.
+    """
+
+    def __init__(self, scenario: Scenario, cache: CompiledCodeCache | None = None,
+                 base_settings: MpcSettings | None = None,
+                 wbc_settings: WbcSettings | None = None, tick_s: float = WBC_TICK_S) -> None:
+        self.scenario = scenario
+        self.tick_s = tick_s
+        self.start_s = 0.0
+        self.wbc_settings = wbc_settings or WbcSettings()
+        self.settings = scenario.mpc_settings(base_settings or MpcSettings())
+        team_settings = scenario.team_settings()
+        self.team = TeamModel.from_settings(team_settings, srb_parameters)
+        self.reference = scenario.reference.to_reference()
+        self.obstacles = scenario.core_obstacles()
+        gait = TrotGait(scenario.gait.period_s, scenario.gait.duty_factor)
+        self.robots: list[RobotControl] = []
+        for agent, parameters in zip(team_settings.agents, self.team.robots, strict=True):
+            model = load_pinocchio_model(agent.robot_type)
+            wbc = WholeBodyController(model, standing_configuration(agent.robot_type, model),
+                                      np.asarray(agent.coupling_point_in_robot_m),
+                                      FOOT_RADIUS_M[agent.robot_type], self.wbc_settings)
+            legs = LegCoordinator(parameters, gait, scenario.gait.swing_height_m)
+            self.robots.append(RobotControl(agent.name, agent.robot_type, wbc, legs))
+        self.estimator = PayloadEstimator(self.team)
+        cache = cache or CompiledCodeCache()
+        self.controller: CentralizedMpc | DistributedMpc
+        if scenario.controller.mode == "centralized":
+            self.controller = CentralizedMpc(self.team, self.settings, compiler=cache)
+        else:
+            spec = LocalSolverSpec(self.settings, self.team.agent_count, cache)
+            executor = ProcessExecutor(spec) if scenario.controller.executor == "process" else None
+            self.controller = DistributedMpc(self.team, self.settings, executor=executor,
+                                             compiler=cache)
+        self.payload_estimate: np.ndarray | None = None
+
+    @property
+    def robot_names(self) -> list[str]:
+        return [robot.name for robot in self.robots]
+
+    def close(self) -> None:
+        """Stop the ADMM worker processes (if any)."""
+        if isinstance(self.controller, DistributedMpc):
+            self.controller.close()
+
+    def reset(self, measurements: list[RobotMeasurement], start_s: float = 0.0) -> None:
+        """Standing start at ``start_s``: every leg in stance at its measured foot position."""
+        self.start_s = start_s
+        for robot, measurement in zip(self.robots, measurements, strict=True):
+            state = measurement_state(measurement)
+            robot.legs.reset(robot.wbc.srb_state(state), robot.wbc.foot_positions(state))
+
+    def gait_time(self, t: float) -> float | None:
+        """Gait clock: None while settling (all feet down), then time since the gait started."""
+        elapsed = t - self.start_s
+        return None if elapsed < SETTLE_S else elapsed - SETTLE_S
+
+    def reference_time(self, t: float) -> float:
+        return max(t - self.start_s - SETTLE_S, 0.0)
+
+    # --- NMPC ----------------------------------------------------------------------------
+    def nmpc_inputs(self, t: float, measurements: list[RobotMeasurement], frame: MocapFrame,
+                    obstacles: list[Obstacle] | None = None, delay_s: float = 0.0,
+                    active: tuple[MpcPlan, float] | None = None) -> NmpcDecision:
+        """The NMPC's inputs from ``frame`` (robot poses) and the robots' own measurements at
+        ``t``, for a plan that takes effect at ``t + delay_s``: with ``delay_s`` > 0 and an
+        ``active`` (plan, its stage-0 time), the measured states are predicted to that instant
+        (``core.nmpc.delay_compensation``) and references, gait and obstacles (default: the
+        scenario's) are taken there; the decision's ``time_s`` is ``t + delay_s``. Updates
+        the payload estimate (from the measurement)."""
+        settings = self.settings
+        n, ts = settings.horizon_steps, settings.sample_period_s
+        robot_states = np.array([
+            robot.wbc.srb_state(mocap_state(m, frame, robot.name))
+            for robot, m in zip(self.robots, measurements, strict=True)])
+        payload = self.estimator.estimate(robot_states, self.payload_estimate)
+        self.payload_estimate = payload
+        if delay_s > 0.0 and active is not None:
+            plan, plan_start_s = active
+            robot_states, payload = predict_states(plan, t - plan_start_s, delay_s,
+                                                   robot_states, payload, ts)
+        else:
+            delay_s = 0.0
+        t = t + delay_s
+        robot_refs, payload_ref = horizon_references(self.team, self.reference,
+                                                     self.reference_time(t), n, ts)
+        if t - self.start_s < SETTLE_S:  # hold the start pose while settling
+            robot_refs[:, :, 3:6] = 0.0
+            payload_ref[:, 3:6] = 0.0
+        feet, contacts = [], []
+        gait_time = self.gait_time(t)
+        for i, robot in enumerate(self.robots):
+            if gait_time is None:
+                feet.append(np.repeat(robot.legs.planner.feet_in_world_m[None], n, axis=0))
+                contacts.append(np.ones((n, 4)))
+            else:
+                f, c = robot.legs.planner.horizon(gait_time, n, ts, robot_states[i],
+                                                  robot_refs[i])
+                feet.append(f)
+                contacts.append(c)
+        d_safe = settings.safety.safety_distance_m
+        obstacle_time = t - self.start_s
+        obstacle_rows = np.array([o.row(obstacle_time, d_safe)
+                                  for o in (self.obstacles if obstacles is None else obstacles)]
+                                 ).reshape(-1, 5)
+        inputs = MpcInputs(robot_states, payload, robot_refs, payload_ref, np.array(feet),
+                           np.array(contacts), obstacle_rows)
+        return NmpcDecision(t, inputs, frame, self.payload_estimate)
+
+    def compensation_s(self, recent_delays_s: list[float]) -> float:
+        """The delay the next plan is planned for (``controller.delay_compensation_s``): the
+        setting, or the median of the last 10 measured delays (0 before the first)."""
+        setting = self.scenario.controller.delay_compensation_s
+        if setting != "measured":
+            return float(setting)
+        recent = recent_delays_s[-10:]
+        return float(np.median(recent)) if recent else 0.0
+
+    def update(self, decision: NmpcDecision) -> MpcPlan:
+        """Run the NMPC on ``decision``'s inputs (the slow part: may run in another thread)."""
+        return self.controller.update(decision.inputs)
+
+    # --- WBC -----------------------------------------------------------------------------
+    def wbc_steps(self, t: float, plan: MpcPlan, plan_start_s: float,
+                  measurements: list[RobotMeasurement]) -> list[WbcStep]:
+        """Each robot's WBC tick at ``t`` tracking ``plan`` (whose stage 0 is at
+        ``plan_start_s``), from the robots' own measurements."""
+        ts = self.settings.sample_period_s
+        gait_time = self.gait_time(t)
+        reference = self.reference.payload_state(self.reference_time(t))
+        steps = []
+        for i, (robot, measurement) in enumerate(zip(self.robots, measurements, strict=True)):
+            state = measurement_state(measurement)
+            srb = robot.wbc.srb_state(state)
+            feet_now = robot.wbc.foot_positions(state)
+            if gait_time is None:
+                stance = np.ones(4)
+                feet = (robot.legs.planner.feet_in_world_m.copy(), np.zeros((4, 3)),
+                        np.zeros((4, 3)))
+            else:
+                stance = robot.legs.advance(gait_time, srb, reference, feet_now)
+                feet = robot.legs.swing_targets(gait_time, srb, reference[3:6])
+            target = wbc_target(plan, i, t - plan_start_s, ts, stance, feet)
+            output = robot.wbc.compute(state, target)
+            qdd_velocity = (measurement.velocity_rad_s
+                            + output.joint_acceleration_rad_s2 * self.tick_s)
+            command = JointCommand(torque_nm=output.torque_nm, velocity_rad_s=qdd_velocity,
+                                   kd=np.full(12, robot.wbc.settings.joint_damping_nm_s))
+            steps.append(WbcStep(command, output, stance, feet[0]))
+        return steps

@@ -1,0 +1,184 @@
+"""The team's links for ``porter deploy``: robot drivers, MoCap, e-stop and F/T on CAN, opened
+from a ``DeployConfig`` the same way for hardware and for ``--backend sim``.
+
+The Go2 and A1 measure no world position or linear velocity; their drivers take them from the
+MoCap (``MocapTracker.base_state``): position = the newest pose of the robot's rigid body,
+velocity = least-squares slope of its positions over the last ``velocity_window_s`` of MoCap
+frame timestamps (at 120 Hz and 2 mm noise a 0.08 s window gives ~2.5 cm/s noise for ~40 ms of
+lag; a finite difference of two frames would give ~0.3 m/s). The payload estimator is not used
+here: it needs the robot states first.
+
+Opening a link never raises for a link that is absent (no CAN adapter, a Go2 that does not
+answer): the failure is kept in ``problems`` for the pre-flight report.
+"""
+
+from __future__ import annotations
+
+import collections
+import math
+import time
+from collections.abc import Callable
+from dataclasses import dataclass, field
+
+import can
+import numpy as np
+
+from core.model.conventions import PAYLOAD_NAME
+from deploy.config.deploy_config import DeployConfig, Go2Link
+from drivers.can.bus import EstopMonitor, ForceTorqueSensors
+from drivers.interfaces import MocapFrame
+from drivers.link_errors import DriverError
+from drivers.natnet.client import NatNetClient, NatNetClientConfig, NatNetError
+from drivers.unitree.a1_driver import A1Driver
+from drivers.unitree.go2_driver import Go2Driver
+
+Clock = Callable[[], float]
+
+
+class MocapTracker:
+    """The newest MoCap frame under porter's names (robot names, ``payload``, ``obstacle_<i>``
+    for the obstacles the config names a rigid body for), when each body
+    was last seen [s on ``clock``], and each body's recent positions for its velocity.
+    ``poll`` (once per loop tick, loop thread) takes in a new frame if there is one."""
+
+    def __init__(self, client: NatNetClient, bodies: dict[str, str], window_s: float,
+                 clock: Clock) -> None:
+        self.client = client
+        self.bodies = bodies  # porter name -> Motive name
+        self.window_s = window_s
+        self.clock = clock
+        self.frame: MocapFrame | None = None
+        self.last_seen_s: dict[str, float] = {}
+        self._raw: MocapFrame | None = None
+        self._history: dict[str, collections.deque[tuple[float, np.ndarray]]] = {
+            name: collections.deque() for name in bodies}
+
+    def poll(self) -> MocapFrame | None:
+        raw = self.client.latest()
+        if raw is None or raw is self._raw:
+            return self.frame
+        self._raw = raw
+        received_s = self.clock() - self.client.age_s()
+        poses = {}
+        for name, body in self.bodies.items():
+            pose = raw.poses.get(body)
+            if pose is None:
+                continue
+            poses[name] = pose
+            self.last_seen_s[name] = received_s
+            history = self._history[name]
+            history.append((raw.time_s, pose[0]))
+            while history and history[0][0] < raw.time_s - self.window_s:
+                history.popleft()
+        self.frame = MocapFrame(raw.time_s, poses)
+        return self.frame
+
+    def age_s(self, names: list[str] | None = None) -> float | None:
+        """Seconds since the stalest of ``names`` (default all bodies) was last seen; None
+        while one was never seen."""
+        now_s = self.clock()
+        ages = [now_s - self.last_seen_s[name] if name in self.last_seen_s else None
+                for name in (names or list(self.bodies))]
+        return None if any(age is None for age in ages) else max(ages)  # type: ignore[type-var]
+
+    def missing(self) -> list[str]:
+        """Bodies not in the newest frame."""
+        return [name for name in self.bodies if self.frame is None or name not in self.frame.poses]
+
+    def velocity(self, name: str) -> np.ndarray:
+        """Least-squares linear velocity [m/s] of body ``name`` over the window, world frame."""
+        history = self._history[name]
+        if len(history) < 2:
+            return np.zeros(3)
+        times = np.array([t for t, _ in history])
+        positions = np.array([p for _, p in history])
+        centred = times - times.mean()
+        denominator = float(centred @ centred)
+        return centred @ (positions - positions.mean(axis=0)) / denominator \
+            if denominator > 0.0 else np.zeros(3)
+
+    def base_state(self, name: str) -> Callable[[], tuple[np.ndarray, np.ndarray]]:
+        """A driver's ``base_state_source`` for robot ``name``: (position [m], velocity
+        [m/s]) in world; zeros before the body was seen."""
+        def source() -> tuple[np.ndarray, np.ndarray]:
+            frame = self.frame
+            if frame is None or name not in frame.poses:
+                history = self._history[name]
+                position = history[-1][1] if history else np.zeros(3)
+                return np.array(position), np.zeros(3)
+            return np.array(frame.poses[name][0]), self.velocity(name)
+        return source
+
+
+@dataclass
+class TeamLinks:
+    """Open links; ``problems`` names the ones that could not be opened."""
+
+    drivers: dict[str, Go2Driver | A1Driver]
+    mocap: NatNetClient | None
+    tracker: MocapTracker | None
+    estop: EstopMonitor | None
+    force_torque: ForceTorqueSensors | None
+    problems: list[str] = field(default_factory=list)
+
+    def close(self) -> None:
+        for reader in (self.force_torque, self.estop):
+            if reader is not None:
+                reader.close()
+        if self.mocap is not None:
+            self.mocap.close()
+        for driver in self.drivers.values():
+            if isinstance(driver, A1Driver):
+                driver.close()
+
+
+def open_links(config: DeployConfig, clock: Clock = time.monotonic) -> TeamLinks:
+    """Open every link of ``config`` (see the module docstring)."""
+    problems: list[str] = []
+    mocap_config = config.mocap
+    bodies = {name: config.body_name(name) for name in [*config.robots, PAYLOAD_NAME]}
+    bodies.update({f"obstacle_{i}": body for i, body in enumerate(mocap_config.obstacle_bodies)
+                   if body is not None})
+    mocap: NatNetClient | None = None
+    tracker: MocapTracker | None = None
+    try:
+        mocap = NatNetClient(NatNetClientConfig(
+            server_address=mocap_config.server_address, command_port=mocap_config.command_port,
+            data_port=mocap_config.data_port, multicast=mocap_config.multicast,
+            multicast_group=mocap_config.multicast_group,
+            local_address=mocap_config.local_address, body_ids=mocap_config.body_ids,
+            stale_timeout_s=mocap_config.stale_timeout_s), clock=clock)
+        tracker = MocapTracker(mocap, bodies, mocap_config.velocity_window_s, clock)
+    except NatNetError as error:
+        problems.append(f"MoCap: {error}")
+    drivers: dict[str, Go2Driver | A1Driver] = {}
+    for name, link in config.robots.items():
+        source = tracker.base_state(name) if tracker is not None else None
+        try:
+            if isinstance(link, Go2Link):
+                drivers[name] = Go2Driver(
+                    name, link.domain_id, config.network_interface, link.topic_prefix,
+                    link.link_timeout_s, link.contact_threshold_n, link.foot_force_n_per_count,
+                    base_state_source=source, clock=clock)
+            else:
+                drivers[name] = A1Driver(
+                    name, link.robot_address, link.local_address, link.local_port,
+                    link.link_timeout_s, link.contact_threshold_n, link.foot_force_n_per_count,
+                    base_state_source=source, clock=clock)
+        except DriverError as error:
+            problems.append(f"robot {name}: {error}")
+    estop: EstopMonitor | None = None
+    force_torque: ForceTorqueSensors | None = None
+    try:
+        estop = EstopMonitor(interface=config.can.interface, channel=config.can.channel,
+                             timeout_s=config.safety.heartbeat_timeout_s, clock=clock)
+        if config.can.force_torque:
+            force_torque = ForceTorqueSensors(list(config.robots), estop.bus, clock=clock)
+    except (can.CanError, OSError, ValueError) as error:
+        problems.append(f"CAN: cannot open {config.can.interface} channel "
+                        f"{config.can.channel!r}: {error}")
+    return TeamLinks(drivers, mocap, tracker, estop, force_torque, problems)
+
+
+def finite_or_none(value: float) -> float | None:
+    return value if math.isfinite(value) else None

@@ -1,0 +1,55 @@
+"""The safety supervisor: its state machine, fault checks, pre-flight and postures.
+
+Names load on first use (``core.lazy_exports``), so importing the package imports nothing
+else.
+"""
+
+from __future__ import annotations
+
+from typing import TYPE_CHECKING
+
+from core.lazy_exports import lazy_exports
+
+if TYPE_CHECKING:
+    from deploy.safety.checks import (
+        DeadlineOverrunWindow,
+        RobotLimits,
+        SolverFailureCounter,
+        SupervisorSettings,
+        base_height_fault,
+        joint_position_fault,
+        joint_velocity_fault,
+        mocap_fault,
+        non_finite_fault,
+        orientation_fault,
+        robot_limits,
+        tilt_rad,
+        torque_fault,
+    )
+    from deploy.safety.posture import PostureMove, sitting_posture, smoothstep, standing_posture
+    from deploy.safety.preflight import PreflightCheck, PreflightReport, evaluate
+    from deploy.safety.supervisor import (
+        SafetyError,
+        SafetyInputs,
+        SafetyState,
+        SafetySupervisor,
+        Transition,
+    )
+
+_SOURCES = {
+    "deploy.safety.checks": ["SupervisorSettings", "RobotLimits", "robot_limits",
+        "non_finite_fault", "tilt_rad", "orientation_fault", "base_height_fault",
+        "joint_velocity_fault", "joint_position_fault", "torque_fault", "mocap_fault",
+        "SolverFailureCounter", "DeadlineOverrunWindow"],
+    "deploy.safety.posture": ["standing_posture", "sitting_posture", "smoothstep", "PostureMove"],
+    "deploy.safety.preflight": ["PreflightCheck", "PreflightReport", "evaluate"],
+    "deploy.safety.supervisor": ["SafetyError", "SafetyInputs", "SafetyState", "SafetySupervisor",
+        "Transition"],
+}
+__all__ = ["DeadlineOverrunWindow", "PostureMove", "PreflightCheck", "PreflightReport",
+           "RobotLimits", "SafetyError", "SafetyInputs", "SafetyState", "SafetySupervisor",
+           "SolverFailureCounter", "SupervisorSettings", "Transition", "base_height_fault",
+           "evaluate", "joint_position_fault", "joint_velocity_fault", "mocap_fault",
+           "non_finite_fault", "orientation_fault", "robot_limits", "sitting_posture", "smoothstep",
+           "standing_posture", "tilt_rad", "torque_fault"]
+__getattr__ = lazy_exports(__name__, _SOURCES)

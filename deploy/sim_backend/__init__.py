@@ -1,0 +1,32 @@
+"""The simulated world behind the real drivers' protocols, in its own process.
+
+Names load on first use (``core.lazy_exports``), so importing the package imports nothing
+else.
+"""
+
+from __future__ import annotations
+
+from typing import TYPE_CHECKING
+
+from core.lazy_exports import lazy_exports
+
+if TYPE_CHECKING:
+    from deploy.sim_backend.backend import SimBackend, free_udp_port, loopback_config
+    from deploy.sim_backend.world import (
+        CommandsAfterFault,
+        PipeBus,
+        ScaledClock,
+        SimWorld,
+        WorldSpec,
+        lay_down,
+        serve,
+    )
+
+_SOURCES = {
+    "deploy.sim_backend.backend": ["free_udp_port", "loopback_config", "SimBackend"],
+    "deploy.sim_backend.world": ["ScaledClock", "CommandsAfterFault", "WorldSpec", "PipeBus",
+        "lay_down", "SimWorld", "serve"],
+}
+__all__ = ["CommandsAfterFault", "PipeBus", "ScaledClock", "SimBackend", "SimWorld", "WorldSpec",
+           "free_udp_port", "lay_down", "loopback_config", "serve"]
+__getattr__ = lazy_exports(__name__, _SOURCES)

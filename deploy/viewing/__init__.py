@@ -1,0 +1,25 @@
+"""Rerun views of live runs and recorded logs.
+
+Names load on first use (``core.lazy_exports``), so importing the package imports nothing
+else.
+"""
+
+from __future__ import annotations
+
+from typing import TYPE_CHECKING
+
+from core.lazy_exports import lazy_exports
+
+if TYPE_CHECKING:
+    from deploy.viewing.layout import blueprint, robot_entity
+    from deploy.viewing.rerun_view import LiveSink, RerunLogView, live_sink, open_recording
+    from deploy.viewing.series import SeriesLogger
+
+_SOURCES = {
+    "deploy.viewing.layout": ["robot_entity", "blueprint"],
+    "deploy.viewing.rerun_view": ["RerunLogView", "open_recording", "LiveSink", "live_sink"],
+    "deploy.viewing.series": ["SeriesLogger"],
+}
+__all__ = ["LiveSink", "RerunLogView", "SeriesLogger", "blueprint", "live_sink", "open_recording",
+           "robot_entity"]
+__getattr__ = lazy_exports(__name__, _SOURCES)

@@ -1,0 +1,31 @@
+"""The MuJoCo team: the scene built from the URDFs and the simulation behind the drivers.
+
+Names load on first use (``core.lazy_exports``), so importing the package imports nothing
+else.
+"""
+
+from __future__ import annotations
+
+from typing import TYPE_CHECKING
+
+from core.lazy_exports import lazy_exports
+
+if TYPE_CHECKING:
+    from drivers.mujoco.scene import (
+        RobotIndices,
+        TeamScene,
+        build_team_scene,
+        robot_spec,
+        robot_urdf_text,
+        urdf_effort_limits_nm,
+    )
+    from drivers.mujoco.simulation import SimMocap, SimRobotDriver, TeamSimulation
+
+_SOURCES = {
+    "drivers.mujoco.scene": ["robot_urdf_text", "urdf_effort_limits_nm", "robot_spec",
+        "RobotIndices", "TeamScene", "build_team_scene"],
+    "drivers.mujoco.simulation": ["TeamSimulation", "SimRobotDriver", "SimMocap"],
+}
+__all__ = ["RobotIndices", "SimMocap", "SimRobotDriver", "TeamScene", "TeamSimulation",
+           "build_team_scene", "robot_spec", "robot_urdf_text", "urdf_effort_limits_nm"]
+__getattr__ = lazy_exports(__name__, _SOURCES)

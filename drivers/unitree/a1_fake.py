@@ -1,0 +1,130 @@
+"""``FakeA1``: a MuJoCo-backed UDP peer that speaks the A1's low-level protocol.
+
+It wraps a simulated ``RobotDriver`` (``TeamSimulation.robot_driver(name)``) behind a UDP
+socket on ``local_address`` (loopback by default): ``poll_commands`` drains LowCmd datagrams,
+rejects (and counts) those of the wrong size, CRC, level flag or with non-finite values,
+keeping the previous command, and sends the newest valid one to the sim driver (whose
+firmware law applies it); ``publish_state`` sends a LowState of ``driver.read()`` (Unitree
+motor and foot order, IMU quaternion wxyz) to ``peer_address``, or, when that is None, to
+the source of the last valid command (the real robot answers whoever commands it).
+
+Stepping is the caller's: step the simulation, then ``poll_commands`` / ``publish_state``
+(deterministic). ``start(rate_hz, step)`` runs that cycle in a background thread.
+"""
+
+from __future__ import annotations
+
+import select
+import socket
+from collections import Counter
+from collections.abc import Callable
+
+from drivers.interfaces import JointCommand, RobotDriver
+from drivers.unitree.a1_udp_layout import (
+    LEVEL_FLAG_LOW,
+    LOW_CMD_SIZE,
+    Crc,
+    LayoutError,
+    decode_low_cmd,
+    default_crc,
+    encode_low_state,
+)
+from drivers.unitree.conventions import (
+    command_problem,
+    joint_command_from_wire_command,
+    wire_state_from_measurement,
+)
+from drivers.unitree.peer import PeriodicThread
+
+
+class FakeA1:
+    """UDP peer of an ``A1Driver``, backed by the simulated ``driver``. ``local_port`` 0 picks
+    a free port (``local_endpoint`` tells which; give it to the driver as robot address)."""
+
+    def __init__(self, driver: RobotDriver, local_address: str = "127.0.0.1",
+                 local_port: int = 0, peer_address: tuple[str, int] | None = None,
+                 foot_force_n_per_count: float = 1.0, crc: Crc = default_crc) -> None:
+        self.driver = driver
+        self.peer_address = peer_address
+        self.foot_force_n_per_count = foot_force_n_per_count
+        self.crc = crc
+        self._socket = socket.socket(socket.AF_INET, socket.SOCK_DGRAM)
+        self._socket.bind((local_address, local_port))
+        self._socket.setblocking(False)
+        self.local_endpoint: tuple[str, int] = self._socket.getsockname()
+        self.commands_received = 0
+        self.commands_rejected: Counter[str] = Counter()
+        self.states_published = 0
+        self.last_command: JointCommand | None = None
+        self._last_source: tuple[str, int] | None = None
+        self._runner = PeriodicThread("FakeA1")
+
+    def close(self) -> None:
+        self.stop()
+        self._socket.close()
+
+    @property
+    def commands_rejected_total(self) -> int:
+        return sum(self.commands_rejected.values())
+
+    def wait_for_command(self, timeout_s: float) -> bool:
+        """Block until a datagram is pending or ``timeout_s`` [s] passed (then False); an
+        answering peer (the real A1 answers each LowCmd) then calls ``poll_commands``."""
+        readable, _, _ = select.select([self._socket], [], [], timeout_s)
+        return bool(readable)
+
+    def poll_commands(self) -> bool:
+        """Check every pending LowCmd in arrival order; send the newest valid one to the sim
+        driver. Returns whether a new command was applied."""
+        newest: JointCommand | None = None
+        while True:
+            try:
+                data, source = self._socket.recvfrom(4096)
+            except (BlockingIOError, InterruptedError):
+                break
+            except ConnectionRefusedError:  # ICMP port unreachable after a state send
+                continue
+            self.commands_received += 1
+            if len(data) != LOW_CMD_SIZE:
+                self.commands_rejected["truncated" if len(data) < LOW_CMD_SIZE
+                                       else "oversize"] += 1
+                continue
+            try:
+                level_flag, wire = decode_low_cmd(data, self.crc)
+            except LayoutError:
+                self.commands_rejected["crc"] += 1
+                continue
+            problem = "level" if level_flag != LEVEL_FLAG_LOW else command_problem(wire)
+            if problem is not None:
+                self.commands_rejected[problem] += 1
+                continue
+            newest = joint_command_from_wire_command(wire)
+            self._last_source = source
+        if newest is None:
+            return False
+        self.driver.send(newest)
+        self.last_command = newest
+        return True
+
+    def publish_state(self) -> bool:
+        """Send the simulated robot's state (tick = sim time [ms]) to the peer; False when no
+        peer is known yet."""
+        peer = self.peer_address or self._last_source
+        if peer is None:
+            return False
+        measurement = self.driver.read()
+        wire = wire_state_from_measurement(measurement, self.foot_force_n_per_count,
+                                           tick_ms=round(measurement.time_s * 1000.0))
+        self._socket.sendto(encode_low_state(wire, crc=self.crc), peer)
+        self.states_published += 1
+        return True
+
+    def start(self, rate_hz: float, step: Callable[[], None] | None = None) -> None:
+        """Run ``step`` (e.g. advance the simulation), ``poll_commands`` and ``publish_state``
+        every 1 / ``rate_hz`` s in a daemon thread until ``stop``."""
+        calls: list[Callable[[], object]] = [] if step is None else [step]
+        self._runner.start(rate_hz, [*calls, self.poll_commands, self.publish_state])
+
+    def stop(self) -> None:
+        """Stop the background thread (no-op when not started)."""
+        self._runner.stop()

@@ -1,0 +1,154 @@
+"""``FakeGo2``: a MuJoCo-backed DDS peer that speaks the Go2's low-level protocol.
+
+It wraps a simulated ``RobotDriver`` (``TeamSimulation.robot_driver(name)``):
+``publish_state`` writes a ``LowState_`` of ``driver.read()`` on ``rt/lowstate`` (Unitree motor
+and foot order, IMU quaternion wxyz, gyroscope in body, foot forces as counts);
+``poll_commands`` takes the ``LowCmd_`` on ``rt/lowcmd``, rejects (and counts) those with a
+wrong CRC, head, level flag or non-finite values, keeping the previous command, and sends
+the newest valid one to the sim driver, whose firmware law applies it. It also answers the
+motion switcher's ReleaseMode request (``sport_mode_released``).
+
+Stepping is the caller's: step the simulation, then ``publish_state`` / ``poll_commands``
+(deterministic). ``start(rate_hz, step)`` runs the same cycle in a background thread for
+real-time use; the caller keeps the simulation safe from concurrent access.
+"""
+
+from __future__ import annotations
+
+from collections import Counter
+from collections.abc import Callable
+
+from cyclonedds.core import ReadCondition, SampleState, ViewState, WaitSet
+from cyclonedds.pub import DataWriter
+from cyclonedds.qos import Policy, Qos
+from cyclonedds.sub import DataReader
+from cyclonedds.topic import Topic
+from cyclonedds.util import duration
+
+from drivers.interfaces import JointCommand, RobotDriver
+from drivers.unitree.conventions import (
+    command_problem,
+    joint_command_from_wire_command,
+    wire_state_from_measurement,
+)
+from drivers.unitree.go2_dds_types import (
+    LowCmd_,
+    LowState_,
+    Request_,
+    Response_,
+    api_response,
+    low_cmd_crc,
+    low_cmd_header_ok,
+    low_state_from_wire,
+    wire_from_low_cmd,
+)
+from drivers.unitree.go2_driver import (
+    API_ID_RELEASE_MODE,
+    MOTION_SWITCHER_SERVICE,
+    REQUEST_QOS,
+    open_participant,
+    topic_name,
+)
+from drivers.unitree.peer import PeriodicThread
+
+API_NOT_IMPLEMENTED_CODE = 3102  # unitree_sdk2 RPC_ERR_SERVER_API_NOT_IMPL
+COMMAND_QUEUE = Qos(Policy.Reliability.BestEffort, Policy.History.KeepLast(32))
+
+
+class FakeGo2:
+    """DDS peer of a ``Go2Driver``, backed by the simulated ``driver``. Same ``domain_id``,
+    ``network_interface`` (loopback when None) and ``topic_prefix`` as the driver's."""
+
+    def __init__(self, driver: RobotDriver, domain_id: int = 0,
+                 network_interface: str | None = None, topic_prefix: str = "",
+                 foot_force_n_per_count: float = 1.0) -> None:
+        self.driver = driver
+        self.foot_force_n_per_count = foot_force_n_per_count
+        self.participant = open_participant(domain_id, network_interface)
+        p = self.participant
+        self._state_writer = DataWriter(p, Topic(p, topic_name(topic_prefix, "lowstate"),
+                                                 LowState_))
+        self._command_reader = DataReader(
+            p, Topic(p, topic_name(topic_prefix, "lowcmd"), LowCmd_), qos=COMMAND_QUEUE)
+        service = f"api/{MOTION_SWITCHER_SERVICE}"
+        self._request_reader = DataReader(
+            p, Topic(p, topic_name(topic_prefix, f"{service}/request"), Request_),
+            qos=REQUEST_QOS)
+        self._response_writer = DataWriter(
+            p, Topic(p, topic_name(topic_prefix, f"{service}/response"), Response_),
+            qos=REQUEST_QOS)
+        self.commands_received = 0
+        self.commands_rejected: Counter[str] = Counter()
+        self.states_published = 0
+        self.last_command: JointCommand | None = None
+        self.sport_mode_released = False
+        self._runner = PeriodicThread("FakeGo2")
+        self._command_waitset = WaitSet(p)
+        self._command_waitset.attach(ReadCondition(self._command_reader,
+                                                   SampleState.NotRead | ViewState.Any))
+
+    def wait_for_command(self, timeout_s: float) -> bool:
+        """Block until a ``LowCmd_`` is pending or ``timeout_s`` [s] passed (then False);
+        an answering peer (``porter bench drivers``) then calls ``poll_commands``."""
+        return bool(self._command_waitset.wait(duration(seconds=timeout_s)))
+
+    def publish_state(self) -> None:
+        """Write the simulated robot's current state as a ``LowState_`` (tick = sim time, ms)."""
+        measurement = self.driver.read()
+        wire = wire_state_from_measurement(measurement, self.foot_force_n_per_count,
+                                           tick_ms=round(measurement.time_s * 1000.0))
+        self._state_writer.write(low_state_from_wire(wire))
+        self.states_published += 1
+
+    def poll_commands(self) -> bool:
+        """Check every pending ``LowCmd_`` in arrival order; send the newest valid one to the
+        sim driver. Returns whether a new command was applied. Also serves ReleaseMode."""
+        self._serve_motion_switcher()
+        newest: JointCommand | None = None
+        for cmd in self._command_reader.take(N=32):
+            if not isinstance(cmd, LowCmd_):
+                continue
+            self.commands_received += 1
+            problem = self._command_problem(cmd)
+            if problem is not None:
+                self.commands_rejected[problem] += 1
+                continue
+            newest = joint_command_from_wire_command(wire_from_low_cmd(cmd))
+        if newest is None:
+            return False
+        self.driver.send(newest)
+        self.last_command = newest
+        return True
+
+    @property
+    def commands_rejected_total(self) -> int:
+        return sum(self.commands_rejected.values())
+
+    @staticmethod
+    def _command_problem(cmd: LowCmd_) -> str | None:
+        if low_cmd_crc(cmd) != cmd.crc:
+            return "crc"
+        if not low_cmd_header_ok(cmd):
+            return "header"
+        return command_problem(wire_from_low_cmd(cmd))
+
+    def _serve_motion_switcher(self) -> None:
+        for request in self._request_reader.take(N=8):
+            if not isinstance(request, Request_):
+                continue
+            identity = request.header.identity
+            code = 0 if identity.api_id == API_ID_RELEASE_MODE else API_NOT_IMPLEMENTED_CODE
+            self.sport_mode_released |= code == 0
+            if not request.header.policy.noreply:
+                self._response_writer.write(api_response(request, code))
+
+    # --- real-time use ------------------------------------------------------------------
+    def start(self, rate_hz: float, step: Callable[[], None] | None = None) -> None:
+        """Run ``step`` (e.g. advance the simulation), ``poll_commands`` and ``publish_state``
+        every 1 / ``rate_hz`` s in a daemon thread until ``stop``."""
+        calls: list[Callable[[], object]] = [] if step is None else [step]
+        self._runner.start(rate_hz, [*calls, self.poll_commands, self.publish_state])
+
+    def stop(self) -> None:
+        """Stop the background thread (no-op when not started)."""
+        self._runner.stop()

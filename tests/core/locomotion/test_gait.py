@@ -1,0 +1,56 @@
+"""Trot schedule, swing timing and Raibert footholds."""
+
+from __future__ import annotations
+
+import numpy as np
+import pytest
+
+from core.locomotion.gait import FootholdPlanner, TrotGait
+from drivers.robot_descriptions import srb_parameters
+
+
+def test_trot_alternates_diagonal_pairs() -> None:
+    gait = TrotGait(period_s=0.4, duty_factor=0.5)
+    first, second = gait.contacts(0.05), gait.contacts(0.25)
+    np.testing.assert_array_equal(first, [1, 0, 0, 1])  # FL + RR
+    np.testing.assert_array_equal(second, [0, 1, 1, 0])  # FR + RL
+    schedule = gait.schedule(0.0, 40, 0.01)
+    assert np.all(schedule.sum(axis=1) == 2)
+    assert schedule[:, 0].mean() == pytest.approx(0.5)
+
+
+def test_swing_progress_and_touchdown_time() -> None:
+    gait = TrotGait(period_s=0.3, duty_factor=0.6)
+    # FR starts its swing at phase 0.6 (t = 0.03 s with its half-period offset)
+    t = 0.03 + 0.25 * gait.swing_duration_s
+    progress = gait.swing_progress(t)
+    assert progress[1] == pytest.approx(0.25)
+    assert progress[0] == 0.0 and gait.contacts(t)[0] == 1.0
+    assert gait.time_to_touchdown_s(t)[1] == pytest.approx(0.75 * gait.swing_duration_s)
+    assert gait.swing_duration_s == pytest.approx(0.12)
+
+
+def test_raibert_footholds_lead_with_velocity_and_correct_errors() -> None:
+    robot = srb_parameters("go2")
+    gait = TrotGait()
+    planner = FootholdPlanner(robot, gait)
+    state = np.zeros(12)
+    state[2] = robot.nominal_height_m
+    planner.reset(state)
+    neutral = planner.feet_in_world_m.copy()
+    reference = np.zeros(12)
+    reference[3] = 0.4
+    # walking at the reference speed: feet land half a stance ahead of the (moved) hips
+    moving = state.copy()
+    moving[3] = 0.4
+    targets = planner.swing_targets(0.2, moving, reference[3:6])
+    lead = gait.time_to_touchdown_s(0.2)
+    swing = gait.contacts(0.2) == 0
+    expected_x = neutral[swing, 0] + 0.4 * lead[swing] + 0.4 * gait.stance_duration_s / 2
+    np.testing.assert_allclose(targets[swing, 0], expected_x, atol=1e-12)
+    assert np.all(targets[:, 2] == 0.0)
+    # slower than the reference: feet land further back (capture-point correction)
+    slow = moving.copy()
+    slow[3] = 0.2
+    slow_targets = planner.swing_targets(0.2, slow, reference[3:6])
+    assert np.all(slow_targets[swing, 0] < targets[swing, 0])

@@ -1,0 +1,63 @@
+"""Warm start: multipliers shift with the same stage map as the primal."""
+
+from __future__ import annotations
+
+import numpy as np
+import pytest
+
+from core.nmpc.nlp_solver import NlpSolution, SolveStats
+from core.nmpc.transport_problem import TransportProblem, build_transport_problem
+from core.nmpc.warm_start import shift_solution, shifted_multipliers
+from tests.core.controller_fixtures import settings
+
+
+@pytest.fixture(scope="module")
+def problem() -> TransportProblem:
+    return build_transport_problem(settings(), 2, local=True)
+
+
+def test_constraint_blocks_cover_every_row_once_in_stage_order(problem: TransportProblem
+                                                                 ) -> None:
+    blocks = problem.nlp.constraint_blocks
+    rows = sorted(blocks.values())
+    assert rows[0][0] == 0
+    for (start, size), (following, _) in zip(rows[:-1], rows[1:], strict=True):
+        assert start + size == following
+    assert sum(size for _, size in rows) == problem.nlp.lower_constraints.size
+    stages = [int(name.rsplit("@", 1)[1]) for name in blocks]
+    assert stages == sorted(stages)  # grouped by stage, as the structured solvers need
+    n = problem.horizon_steps
+    assert {"gap_robot_self@0", "gap_payload@0", "x0_payload@0", "friction_self@0",
+            "coupling_self@0", "barriers@1", f"barriers@{n - 1}"} <= set(blocks)
+    assert "barriers@0" not in blocks and "x0_payload@1" not in blocks
+
+
+def test_multipliers_shift_one_stage_like_the_primal(problem: TransportProblem) -> None:
+    nlp = problem.nlp
+    n = problem.horizon_steps
+    rng = np.random.default_rng(0)
+    lam_g = rng.normal(size=nlp.lower_constraints.size)
+    lam_x = rng.normal(size=nlp.variable_count)
+    stats = SolveStats("ok", True, 1, 0.0, 0.0, 0.0)
+    previous = NlpSolution(rng.normal(size=nlp.variable_count), lam_g, lam_x, stats)
+    shifted_g, shifted_x = shifted_multipliers(problem, previous)
+
+    def block(values: np.ndarray, name: str) -> np.ndarray:
+        start, size = nlp.constraint_blocks[name]
+        return values[start : start + size]
+
+    for name in ("gap_payload", "friction_self", "coupling_self", "yaw_torque_1"):
+        for k in range(n - 1):
+            np.testing.assert_array_equal(block(shifted_g, f"{name}@{k}"),
+                                          block(lam_g, f"{name}@{k + 1}"))
+        np.testing.assert_array_equal(block(shifted_g, f"{name}@{n - 1}"),
+                                      block(lam_g, f"{name}@{n - 1}"))  # last one repeated
+    for k in range(1, n - 1):
+        np.testing.assert_array_equal(block(shifted_g, f"barriers@{k}"),
+                                      block(lam_g, f"barriers@{k + 1}"))
+    # the initial condition exists at stage 0 only: its multiplier stays
+    np.testing.assert_array_equal(block(shifted_g, "x0_payload@0"), block(lam_g, "x0_payload@0"))
+    # bound multipliers live on the decision layout: exactly the primal's shift
+    np.testing.assert_array_equal(shifted_x, shift_solution(nlp.decision, n, lam_x))
+    np.testing.assert_array_equal(nlp.decision.get(shifted_x, "grf_self@0"),
+                                  nlp.decision.get(lam_x, "grf_self@1"))

@@ -1,0 +1,344 @@
+"""``porter deploy``: end to end on the simulated world behind the real drivers (CycloneDDS,
+NatNet over UDP, python-can), pre-flight reports, config errors; and its parts (postures, the
+MoCap tracker, the base velocity estimate, pacing) on their own."""
+
+from __future__ import annotations
+
+import signal
+import subprocess
+import sys
+import time
+from pathlib import Path
+
+import numpy as np
+import pinocchio as pin
+import pytest
+import yaml
+
+from core.estimation.base_velocity import BaseVelocityEstimator
+from core.model.conventions import LEG_NAMES
+from deploy.bench.deploy_runs import deploy_row, format_table, scaled_config
+from deploy.cli.porter import main
+from deploy.config.deploy_config import CONFIG_DIR, load_deploy_config
+from deploy.config.files import ConfigError
+from deploy.config.scenario import load_scenario
+from deploy.recording.log_reader import LogFile
+from deploy.runtime.timing import Pacer, PeriodStats
+from deploy.safety.posture import PostureMove, sitting_posture, standing_posture
+from drivers.interfaces import JointCommand
+from drivers.mujoco.scene import build_team_scene
+from drivers.mujoco.simulation import TeamSimulation
+from drivers.robot_descriptions import load_pinocchio_model
+
+TWO_GO2 = CONFIG_DIR / "two_go2.yaml"
+STATES = ["PREFLIGHT", "STANDING_UP", "ARMED", "RUNNING", "SITTING_DOWN", "DONE"]
+
+
+def _config(tmp_path: Path, **changes: dict) -> Path:
+    """The shipped two-Go2 config with sections updated (merged one level deep)."""
+    data = yaml.safe_load(TWO_GO2.read_text())
+    for section, values in changes.items():
+        data[section] = {**data.get(section, {}), **values}
+    path = tmp_path / "deploy.yaml"
+    path.write_text(yaml.safe_dump(data))
+    return path
+
+
+# --- end to end ---------------------------------------------------------------------------
+@pytest.mark.slow
+def test_deploy_on_the_sim_backend_stands_walks_carries_and_sits_down(
+        tmp_path: Path, capsys: pytest.CaptureFixture[str]) -> None:
+    """The main job at the scenario's full length (16 s): it must complete, not stop itself."""
+    log_path = tmp_path / "run.mcap"
+    code = main(["deploy", "--config", str(TWO_GO2), "--backend", "sim", "--yes",
+                 "--record", str(log_path)])
+    captured = capsys.readouterr()
+    assert code == 0, captured.err
+    log = LogFile(log_path)
+    summary = log.summary()
+    assert summary is not None and summary["final_state"] == "DONE"
+    assert summary["safe_stop"] is None
+    assert summary["run_s"] == pytest.approx(load_deploy_config(TWO_GO2)[1].duration_s, abs=0.1)
+    # margin flags are counted and logged, never counted as failed solves
+    assert summary["nmpc_margin_flags"] <= summary["nmpc_updates"]
+    margin_events = [m.message.text for m in log.messages(["/events"])
+                     if "inside safety margin" in m.message.text]
+    assert len(margin_events) >= summary["nmpc_margin_flags"]
+    # every state, in order, as recorded events
+    events = [m.message.text for m in log.messages(["/events"]) if m.message.source == "safety"]
+    assert [e.split(":")[0] for e in events] == [
+        f"{a} -> {b}" for a, b in zip(STATES[:-1], STATES[1:], strict=True)]
+    counts, _, _ = log.message_counts()
+    for robot in ("go2_0", "go2_1"):
+        for kind in ("state", "command", "wbc", "wrench"):
+            assert counts.get(f"/robot/{robot}/{kind}", 0) > 0, (robot, kind)
+        assert counts[f"/robot/{robot}/state"] >= counts[f"/robot/{robot}/wbc"]
+    assert counts["/nmpc/update"] >= 16 * 50  # 16 s at 60 Hz nominal, slow ticks skipped
+    # every decision's outcome is logged, but for one still running when the team sat down
+    assert counts["/nmpc/inputs"] - counts["/nmpc/update"] in (0, 1)
+    assert log.metadata()["porter"]["backend"] == "sim"
+    # walked and carried: the payload moved toward the goal (MoCap), nobody fell (truth)
+    assert summary["payload"]["progress_toward_goal_m"] > 0.9 * np.hypot(4.2, 0.35)
+    truth = summary["sim_ground_truth"]
+    for robot in truth["robots"].values():
+        assert robot["max_tilt_rad"] < 0.3
+        assert robot["commands_rejected"] == 0
+        assert robot["position_m"][2] < 0.2  # sat down: lying on its belly at the end
+    assert min(summary["robot_min_height_running_m"].values()) > 0.25
+    # loop timing is reported (simulated seconds when time_scale < 1)
+    for loop in ("wbc_loop", "nmpc_loop"):
+        assert {"rate_hz", "jitter_p50_ms", "jitter_p99_ms"} <= set(summary[loop])
+    assert "wbc_loop" in captured.out
+    # porter bench deploy reads exactly this summary
+    row = deploy_row(summary)
+    assert row["outcome"] == "completed" and row["time_scale"] == summary["time_scale"]
+    assert row["wbc_rate_ratio"] == pytest.approx(summary["wbc_loop"]["rate_hz"] / 500.0)
+    assert row["nmpc_rate_ratio"] == pytest.approx(summary["nmpc_loop"]["rate_hz"] / 60.0)
+    assert "completed" in format_table([row])
+
+
+@pytest.mark.slow
+@pytest.mark.xfail(strict=False, reason=(
+    "known failure, left open: near obstacle 0 the fatrop local solves of robot 1 hit their "
+    "iteration limit on 4+ consecutive updates and the supervisor stops the team (seen at "
+    "5 s and at 12 s into RUNNING); infeasible plans are the subject of the next issue"))
+def test_the_mixed_team_completes_the_full_scenario(tmp_path: Path) -> None:
+    """Two Go2 + one A1 over the whole scenario: completes, sits down, reaches the goal."""
+    config = CONFIG_DIR / "two_go2_a1.yaml"
+    _, scenario = load_deploy_config(config)
+    code = main(["deploy", "--config", str(config), "--backend", "sim", "--yes",
+                 "--record", str(tmp_path / "run.mcap")])
+    assert code == 0
+    summary = LogFile(tmp_path / "run.mcap").summary()
+    assert summary is not None and summary["final_state"] == "DONE"
+    assert summary["safe_stop"] is None
+    assert summary["run_s"] == pytest.approx(scenario.duration_s, abs=0.1)
+    goal = np.asarray(scenario.reference.waypoints_m[-1])
+    assert np.linalg.norm(np.asarray(summary["payload"]["end_m"][0:2]) - goal) < 0.3
+
+
+FAULT_AT_S = 3.0  # simulated s after the world starts: running by then (stand-up 1.2 s)
+
+
+@pytest.mark.slow
+@pytest.mark.parametrize(("fault", "cause", "reaction_s"), [
+    ({"kind": "estop_press"}, "e-stop: run not allowed (e-stop pressed", 0.05),
+    ({"kind": "mocap_loss"}, "MoCap lost: no frame for", 0.1 + 0.05),
+    ({"kind": "robot_silent", "robot": "go2_1"}, "robot link lost: go2_1", 0.1 + 0.05),
+], ids=["estop", "mocap", "link"])
+def test_a_fault_while_running_leaves_only_damping_reaching_the_motors(
+        tmp_path: Path, capsys: pytest.CaptureFixture[str], fault: dict, cause: str,
+        reaction_s: float) -> None:
+    """The fake world injects the fault; porter must stop the team (exit 3) and from its
+    reaction time on every command the fakes apply is joint damping, until the end."""
+    config = _config(tmp_path, posture={"stand_up_s": 1.0, "settle_s": 0.2},
+                     sim={"faults": [{"at_s": FAULT_AT_S, **fault}]})
+    log_path = tmp_path / "run.mcap"
+    code = main(["deploy", "--config", str(config), "--backend", "sim", "--yes",
+                 "--duration", "5", "--record", str(log_path)])
+    captured = capsys.readouterr()
+    assert code == 3, captured.err
+    log = LogFile(log_path)
+    summary = log.summary()
+    assert summary is not None and summary["final_state"] == "DONE"
+    assert cause in summary["safe_stop"]
+    events = [m.message.text for m in log.messages(["/events"]) if m.message.source == "safety"]
+    assert [e.split(":")[0] for e in events][-2:] == ["RUNNING -> SAFE_STOP", "SAFE_STOP -> DONE"]
+    truth = summary["sim_ground_truth"]
+    assert [f["kind"] for f in truth["faults_applied"]] == [fault["kind"]]
+    for name, robot in truth["robots"].items():
+        after = robot["after_fault"]
+        # damping kept arriving through SAFE_STOP and DONE (0.5 s each at 500 Hz) ...
+        assert after["commands"] > 200, (name, after)
+        # ... and nothing else once the supervisor could have seen the fault
+        assert after["non_damping"] == 0 or after["last_non_damping_s"] < reaction_s, (
+            name, after)
+
+
+def test_ctrl_c_sits_the_team_down_and_closes_the_log(tmp_path: Path) -> None:
+    """SIGINT while standing up (real time: the posture phases need little CPU)."""
+    config = _config(tmp_path, sim={"time_scale": 1.0})
+    log_path = tmp_path / "run.mcap"
+    process = subprocess.Popen(
+        [sys.executable, "-m", "deploy.cli", "deploy", "--config", str(config), "--backend",
+         "sim", "--yes", "--record", str(log_path)], stdout=subprocess.PIPE,
+        stderr=subprocess.PIPE, text=True, cwd=Path(__file__).parents[3])
+    assert process.stderr is not None
+    lines = []
+    for line in process.stderr:
+        lines.append(line)
+        if "PREFLIGHT -> STANDING_UP" in line:
+            process.send_signal(signal.SIGINT)
+            break
+    _, rest = process.communicate(timeout=120)
+    err = "".join(lines) + rest
+    assert process.returncode == 130, err
+    assert "STANDING_UP -> SITTING_DOWN: requested: begin_sit_down" in err
+    assert "SITTING_DOWN -> DONE" in err and "stop requested while standing up" in err
+    summary = LogFile(log_path).summary()
+    assert summary is not None and summary["result"] == "stop requested while standing up"
+
+
+def test_preflight_reports_what_is_missing(tmp_path: Path,
+                                           capsys: pytest.CaptureFixture[str]) -> None:
+    """No CAN node (no e-stop heartbeat, no F/T) and a robot Motive does not track."""
+    config = _config(tmp_path, sim={"can_node": False, "untracked_bodies": ["go2_1"],
+                                    "time_scale": 1.0},
+                     preflight={"timeout_s": 1.0})
+    code = main(["deploy", "--config", str(config), "--backend", "sim", "--yes",
+                 "--no-record"])
+    err = capsys.readouterr().err
+    assert code == 1, err
+    assert "[MISSING] e-stop heartbeat: no e-stop heartbeat received yet" in err
+    assert "[MISSING] coupling F/T sensors: no sample from go2_0, go2_1" in err
+    assert "[MISSING] MoCap rigid bodies: not tracked: go2_1 (rigid body 'go2_1')" in err
+    assert "[ok] robot go2_0 link" in err and "[ok] MoCap server" in err
+    assert "STANDING_UP" not in err  # never stood up
+
+
+def test_on_robots_with_nothing_connected_preflight_names_every_link(
+        tmp_path: Path, capsys: pytest.CaptureFixture[str]) -> None:
+    data = yaml.safe_load(TWO_GO2.read_text())
+    for link in data["robots"].values():
+        link.update(release_sport_mode=False, topic_prefix=f"test_{id(tmp_path)}")
+    data["mocap"]["data_port"] = 0  # any free port
+    data["preflight"]["timeout_s"] = 0.3
+    path = tmp_path / "hw.yaml"
+    path.write_text(yaml.safe_dump(data))
+    code = main(["deploy", "--config", str(path), "--yes", "--record", str(tmp_path / "hw.mcap")])
+    err = capsys.readouterr().err
+    assert code == 1, err
+    assert "[MISSING] link: CAN: cannot open socketcan channel 'can0'" in err
+    assert "[MISSING] robot go2_0 link: go2_0: " in err and "no valid state received yet" in err
+    assert "[MISSING] MoCap server: no answer from NatNet server 127.0.0.1:1510" in err
+    events = [m.message.text for m in LogFile(tmp_path / "hw.mcap").messages(["/events"])]
+    assert "PREFLIGHT -> DONE: requested: finish" in events
+
+
+def test_an_invalid_config_field_is_named(tmp_path: Path,
+                                          capsys: pytest.CaptureFixture[str]) -> None:
+    data = yaml.safe_load(TWO_GO2.read_text())
+    data["robots"]["go2_0"]["domain"] = 3
+    path = tmp_path / "bad.yaml"
+    path.write_text(yaml.safe_dump(data))
+    assert main(["deploy", "--config", str(path), "--backend", "sim", "--yes"]) == 2
+    err = capsys.readouterr().err
+    assert "robots.go2_0.go2.domain" in err and "Extra inputs are not permitted" in err
+
+
+def test_config_cross_checks_name_the_field(tmp_path: Path) -> None:
+    data = yaml.safe_load(TWO_GO2.read_text())
+    data["robots"]["a1_9"] = data["robots"].pop("go2_1")
+    path = tmp_path / "team.yaml"
+    path.write_text(yaml.safe_dump(data))
+    with pytest.raises(ConfigError, match=r"robots: must name the scenario's team.*missing "
+                       r"\['go2_1'\], unknown \['a1_9'\]"):
+        load_deploy_config(path)
+    data = yaml.safe_load(TWO_GO2.read_text())
+    data["mocap"]["local_address"] = "192.168.1.5"
+    path.write_text(yaml.safe_dump(data))
+    with pytest.raises(ConfigError, match="mocap.local_address: 192.168.1.5 is not a loopback"):
+        load_deploy_config(path)
+    data["network_interface"] = "eth0"
+    path.write_text(yaml.safe_dump(data))
+    assert load_deploy_config(path)[0].mocap.local_address == "192.168.1.5"
+
+
+def test_shipped_configs_load() -> None:
+    for path in sorted(CONFIG_DIR.glob("*.yaml")):
+        config, scenario = load_deploy_config(path)
+        assert sorted(config.robots) == sorted(agent.name for agent in scenario.team)
+        assert config.network_interface is None  # loopback unless a user names one
+
+
+def test_bench_deploy_scales_a_copy_of_the_config(tmp_path: Path) -> None:
+    scenario_file = tmp_path / "mine.yaml"
+    scenario_file.write_text(yaml.safe_dump(
+        yaml.safe_load((CONFIG_DIR.parent / "scenarios" / "two_go2.yaml").read_text())))
+    original = _config(tmp_path)
+    data = yaml.safe_load(original.read_text())
+    data["scenario"] = "mine.yaml"  # relative to the config: must survive the copy
+    original.write_text(yaml.safe_dump(data))
+    copies = tmp_path / "copies"
+    copies.mkdir()
+    config, scenario = load_deploy_config(scaled_config(original, 0.35, copies))
+    assert config.sim.time_scale == 0.35
+    assert config.robots == load_deploy_config(original)[0].robots
+    assert scenario == load_deploy_config(original)[1]
+
+
+def test_no_record_is_refused_on_robots(capsys: pytest.CaptureFixture[str]) -> None:
+    assert main(["deploy", "--config", str(TWO_GO2), "--no-record"]) == 2
+    assert "every run on robots is recorded" in capsys.readouterr().err
+
+
+# --- parts ----------------------------------------------------------------------------------
+@pytest.mark.parametrize("robot_type", ["go2", "a1"])
+def test_sitting_posture_lowers_the_trunk_with_the_feet_in_place(robot_type: str) -> None:
+    model = load_pinocchio_model(robot_type)
+    data = model.createData()
+    feet = [model.getFrameId(f"{leg}_foot") for leg in LEG_NAMES]
+
+    def feet_in_base(legs: np.ndarray) -> np.ndarray:
+        q = pin.neutral(model)
+        q[7:] = legs  # LEG_JOINT_NAMES order is the URDF's
+        pin.framesForwardKinematics(model, data, q)
+        return np.array([data.oMf[f].translation for f in feet])
+
+    standing = feet_in_base(standing_posture(robot_type))
+    sitting = feet_in_base(sitting_posture(robot_type, 0.1))
+    np.testing.assert_allclose(sitting - standing, np.tile([0.0, 0.0, 0.1], (4, 1)), atol=1e-5)
+
+
+def test_posture_move_is_smooth_and_ends_at_the_goal() -> None:
+    start, goal = np.zeros(12), np.full(12, 1.0)
+    move = PostureMove(start, goal, start_s=10.0, duration_s=2.0, kp=60.0, kd=3.0)
+    assert np.allclose(move.command(10.0).position_rad, 0.0)
+    assert np.allclose(move.command(11.0).position_rad, 0.5)
+    assert np.allclose(move.command(11.0).velocity_rad_s, 0.75)  # 6 s (1 - s) / T at s = 1/2
+    assert np.allclose(move.command(13.0).position_rad, 1.0) and move.done(12.0)
+    assert np.allclose(move.command(12.0).velocity_rad_s, 0.0)
+
+
+def test_leg_odometry_matches_the_simulated_base_velocity() -> None:
+    scenario = load_scenario("two_go2")
+    scene = build_team_scene(scenario.team_settings(), timestep_s=0.001)
+    simulation = TeamSimulation(scene)
+    for name in ("go2_0", "go2_1"):
+        simulation.set_command(name, JointCommand.hold(standing_posture("go2"), 60.0, 3.0))
+    simulation.apply_push("payload", np.array([40.0, 20.0, 0.0]), 0.3)
+    estimator = BaseVelocityEstimator(load_pinocchio_model("go2"))
+    driver = simulation.robot_driver("go2_0")
+    errors, speeds = [], []
+    for _ in range(400):
+        simulation.step(2)
+        measurement = driver.read()
+        legs = estimator.leg_odometry(measurement)
+        assert legs is not None
+        errors.append(np.linalg.norm(legs - measurement.linear_velocity_in_world_m_s))
+        speeds.append(np.linalg.norm(measurement.linear_velocity_in_world_m_s))
+    assert max(speeds) > 0.05  # it moved
+    assert np.sqrt(np.mean(np.square(errors))) < 0.015  # m/s (feet slip a little)
+
+
+def test_pacer_keeps_the_period_and_reanchors_when_late() -> None:
+    now = [0.0]
+    pacer = Pacer(0.002, clock=lambda: now[0], sleep=lambda s: now.__setitem__(0, now[0] + s))
+    stats = PeriodStats(0.002)
+    for tick in range(5):
+        stats.tick(now[0])
+        now[0] += 0.0005 if tick != 2 else 0.0065  # tick 2 takes 6.5 ms
+        pacer.wait()
+    assert pacer.overruns == 1
+    summary = stats.summary()
+    assert summary["ticks"] == 5 and summary["late_ticks"] == 1
+    assert summary["period_p50_ms"] == pytest.approx(2.0)
+
+
+def test_period_stats_of_a_real_sleep_loop() -> None:
+    pacer = Pacer(0.005)
+    stats = PeriodStats(0.005)
+    for _ in range(20):
+        stats.tick(time.monotonic())
+        pacer.wait()
+    assert stats.summary()["rate_hz"] == pytest.approx(200.0, rel=0.3)
