@@ -3,8 +3,13 @@
 World frame (z up), SI units. Quaternions are (w, x, y, z) and rotate body vectors into the
 world frame. Per-joint arrays have 12 entries in ``core.model.conventions.LEG_JOINT_NAMES``
 order, FL, FR, RL, RR x (hip, thigh, calf); per-foot arrays have 4 entries in
-``core.model.conventions.LEG_NAMES`` order. Backends map their own orders (e.g. Unitree's FR, FL, RR,
-RL motor order) to these by name, once, inside the driver.
+``core.model.conventions.LEG_NAMES`` order. Backends map their own orders (e.g. Unitree's
+FR, FL, RR, RL motor order) to these by name, once, inside the driver.
+
+The control loop (``deploy.runtime.loop``) sees only these protocols: ``RobotDriver`` per robot,
+a ``MocapSource``, an ``EstopSource`` and optionally ``WrenchSensors``; the real links
+(``drivers.unitree``, ``drivers.natnet``, ``drivers.can``) and the in-process simulation
+(``drivers.mujoco``) implement them.
 """
 
 from __future__ import annotations
@@ -88,6 +93,26 @@ class MocapFrame:
     poses: dict[str, Pose]
 
 
+@dataclass(frozen=True)
+class EstopStatus:
+    """Whether the e-stop allows running, and why not."""
+
+    run_allowed: bool
+    reason: str
+
+
+@dataclass(frozen=True)
+class WrenchReading:
+    """One robot's measured coupling wrench: force [N] and torque about the coupling point
+    [N m] its coupling applies to the payload, sensor frame (world-aligned for now)."""
+
+    force_n: np.ndarray
+    torque_nm: np.ndarray
+    sample_counter: int
+    saturated: bool
+    receive_time_s: float
+
+
 @runtime_checkable
 class RobotDriver(Protocol):
     """One robot: read its sensors, send its joint command (kept until the next one)."""
@@ -95,13 +120,42 @@ class RobotDriver(Protocol):
     @property
     def name(self) -> str: ...
 
-    def read(self) -> RobotMeasurement: ...
+    def read(self) -> RobotMeasurement:
+        """The newest state; raises ``drivers.link_errors.LinkLostError`` when it is stale."""
+        ...
 
     def send(self, command: JointCommand) -> None: ...
+
+    def send_damping(self, kd: float) -> None:
+        """The stop command: position loops off, tau = kd [N m s/rad] (0 - dq)."""
+        ...
+
+    def close(self) -> None:
+        """Release the link (sockets, DDS entities); the robot keeps its firmware's timeout."""
+        ...
 
 
 @runtime_checkable
 class MocapSource(Protocol):
-    """A motion-capture system: the most recent frame, or None before the first one."""
+    """A motion-capture system: the most recent frame (None before the first one) and how
+    long ago it arrived [s]."""
 
     def latest(self) -> MocapFrame | None: ...
+
+    def age_s(self) -> float:
+        """Seconds since the newest frame arrived (inf before the first one)."""
+        ...
+
+
+@runtime_checkable
+class EstopSource(Protocol):
+    """The e-stop: run is allowed only while it says so."""
+
+    def status(self) -> EstopStatus: ...
+
+
+@runtime_checkable
+class WrenchSensors(Protocol):
+    """Coupling force/torque sensors: the newest complete sample per robot name."""
+
+    def latest(self) -> dict[str, WrenchReading]: ...

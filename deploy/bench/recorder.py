@@ -28,7 +28,7 @@ from deploy.recording.flight_recorder import FlightRecorder, RecorderSettings
 from deploy.recording.log_format import LOG_FORMAT_VERSION, RUN_METADATA
 from deploy.recording.run_record import open_run_recorder
 from deploy.runtime.codegen_cache import CompiledCodeCache
-from deploy.runtime.team_loop import TeamLoop
+from deploy.runtime.sim_run import SimRun
 
 
 def _run(name: str, duration_s: float, executor: str, base: MpcSettings,
@@ -37,7 +37,7 @@ def _run(name: str, duration_s: float, executor: str, base: MpcSettings,
     scenario = scenario.model_copy(update={
         "duration_s": min(duration_s, scenario.duration_s),
         "controller": scenario.controller.model_copy(update={"executor": executor})})
-    loop = TeamLoop(scenario, cache, base)
+    loop = SimRun(scenario, cache, base)
     recorder = None
     if log is not None:
         sinks = [] if capture is None else [

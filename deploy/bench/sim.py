@@ -14,7 +14,7 @@ from pathlib import Path
 from core.nmpc.settings import MpcSettings
 from deploy.config.scenario import load_scenario
 from deploy.runtime.codegen_cache import CompiledCodeCache
-from deploy.runtime.team_loop import TeamLoop
+from deploy.runtime.sim_run import SimRun
 
 
 def bench_scenario(name: str, duration_s: float, executor: str, base: MpcSettings,
@@ -24,7 +24,7 @@ def bench_scenario(name: str, duration_s: float, executor: str, base: MpcSetting
     scenario = scenario.model_copy(update={
         "duration_s": min(duration_s, scenario.duration_s),
         "controller": scenario.controller.model_copy(update={"executor": executor})})
-    loop = TeamLoop(scenario, cache, base)
+    loop = SimRun(scenario, cache, base)
     try:
         summary = loop.run()
     finally:

@@ -2,10 +2,10 @@
 
 Builds the controller (NMPC, WBCs), starts the simulated world for ``--backend sim``, opens
 the links, records the run (``deploy.recording.run_record``, backend ``hw`` or ``sim``) and runs
-``deploy.runtime.deploy_loop``. Prints the pre-flight report, the state transitions and a summary
-(JSON on stdout; also the log's summary metadata). Exit codes: 0 ran and sat down, 1
-pre-flight failed, 2 bad config / arguments, 3 safe stop, 130 stopped by Ctrl-C / SIGTERM
-(the team sat down first), 4 the operator declined to arm.
+``deploy.runtime.loop`` (paced clock, the full sequence). Prints the pre-flight report, the
+state transitions and a summary (JSON on stdout; also the log's summary metadata). Exit codes:
+0 ran and sat down, 1 pre-flight failed, 2 bad config / arguments, 3 safe stop, 130 stopped by
+Ctrl-C / SIGTERM (the team sat down first), 4 the operator declined to arm.
 """
 
 from __future__ import annotations
@@ -17,6 +17,7 @@ import math
 import sys
 import threading
 import time
+from collections.abc import Callable
 from pathlib import Path
 from typing import Any
 
@@ -24,17 +25,23 @@ import numpy as np
 import psutil
 
 from core.model.conventions import PAYLOAD_NAME
-from deploy.config.deploy_config import load_deploy_config
+from deploy.config.deploy_config import DeployConfig, load_deploy_config
 from deploy.config.files import ConfigError
 from deploy.recording.flight_recorder import FlightRecorder
+from deploy.recording.loop_recording import LoopRecording
 from deploy.recording.run_record import default_log_path, open_run_recorder
+from deploy.runtime.clock import PacedClock
 from deploy.runtime.codegen_cache import CompiledCodeCache
 from deploy.runtime.controller import TeamController
-from deploy.runtime.deploy_loop import DeployLoop
-from deploy.runtime.links import open_links
+from deploy.runtime.links import TeamLinks, open_links
+from deploy.runtime.loop import ControlLoop, LoopSettings
+from deploy.runtime.nmpc_schedule import NmpcSchedule
+from deploy.runtime.nmpc_thread import NmpcThread
 from deploy.runtime.stop_request import StopRequest
+from deploy.safety.preflight import PreflightReport, evaluate
 from deploy.safety.supervisor import SafetyState
 from deploy.sim_backend.backend import SimBackend
+from drivers.interfaces import RobotMeasurement
 
 SWITCH_INTERVAL_S = 2e-4
 
@@ -78,7 +85,7 @@ def run_deploy(args: argparse.Namespace) -> int:
     backend: SimBackend | None = None
     recorder: FlightRecorder | None = None
     links = None
-    loop: DeployLoop | None = None
+    loop: ControlLoop | None = None
     stop = StopRequest()
     # The loop shares the interpreter lock with the NMPC, recorder, MoCap and CAN threads: a
     # thread that takes it keeps it up to the switch interval (5 ms by default, 2.5 WBC
@@ -100,10 +107,10 @@ def run_deploy(args: argparse.Namespace) -> int:
             recorder = open_run_recorder(path, scenario, control.settings, control.wbc_settings,
                                          args.backend, config.recorder)
             say(f"recording to {path}")
-        loop = DeployLoop(config, control, links, recorder, OperatorPrompt(args.yes), stop,
-                          duration_s, clock, sleep)
+        loop = deploy_loop(config, control, links, recorder, OperatorPrompt(args.yes), stop,
+                           duration_s, clock, sleep)
         with stop.installed():
-            loop.run()
+            loop.run(f"start: porter deploy, scenario {scenario.name}")
     finally:
         sys.setswitchinterval(switch_interval_s)
         summary = None
@@ -124,7 +131,35 @@ def run_deploy(args: argparse.Namespace) -> int:
     return exit_code(loop, stop)
 
 
-def exit_code(loop: DeployLoop, stop: StopRequest) -> int:
+def deploy_loop(config: DeployConfig, control: TeamController, links: TeamLinks,
+                recorder: FlightRecorder | None, confirm: Callable[[], bool | None],
+                stop: Callable[[], bool], duration_s: float,
+                clock: Callable[[], float] = time.monotonic,
+                sleep: Callable[[float], None] = time.sleep) -> ControlLoop:
+    """The control loop on the paced clock, through the deploy sequence (pre-flight, stand
+    up, arm, run, sit down), the NMPC in its thread."""
+    recording = None if recorder is None else LoopRecording(
+        recorder, control.robot_names, control.obstacles,
+        [o.height_m for o in control.scenario.obstacles],
+        control.settings.safety.safety_distance_m, control.settings.sample_period_s,
+        np.asarray(control.scenario.payload.size_m))
+    nmpc = NmpcSchedule(control, NmpcThread(control, clock), config.rates.nmpc_hz, clock,
+                        recording, links.force_torque)
+    settings = LoopSettings(config.rates, config.safety, config.posture,
+                            config.preflight.timeout_s)
+    loop: ControlLoop
+
+    def preflight(measurements: dict[str, RobotMeasurement], link_errors: dict[str, str]
+                  ) -> PreflightReport:
+        return evaluate(config, links, loop.limits, measurements, link_errors, links.sport_mode)
+
+    loop = ControlLoop(control, links, settings, PacedClock(1.0 / config.rates.wbc_hz, clock,
+                                                            sleep),
+                       nmpc, recording, stop, duration_s, "deploy", confirm, preflight)
+    return loop
+
+
+def exit_code(loop: ControlLoop, stop: StopRequest) -> int:
     if loop.report is not None and not loop.report.ok:
         return 1
     if any(t.target == SafetyState.SAFE_STOP for t in loop.supervisor.transitions):
@@ -140,7 +175,7 @@ def config_name(path: str) -> str:
     return Path(path).name
 
 
-def deploy_summary(loop: DeployLoop, args: argparse.Namespace,
+def deploy_summary(loop: ControlLoop, args: argparse.Namespace,
                    backend: SimBackend | None) -> dict[str, Any]:
     """The run's summary: outcome, transitions, loop rates and jitter, NMPC health, payload
     progress from the MoCap, and (``--backend sim``) simulator ground truth."""
@@ -153,20 +188,14 @@ def deploy_summary(loop: DeployLoop, args: argparse.Namespace,
     summary: dict[str, Any] = {
         "config": str(args.config), "backend": args.backend,
         "scenario": loop.control.scenario.name, "robots": loop.names,
-        "result": loop.ended_by, "final_state": supervisor.state.name,
-        "safe_stop": supervisor.fault or None,
-        "transitions": [f"{t.time_s:.3f} s {t.text}" for t in supervisor.transitions],
+        **loop.outcome(),
         "preflight": [{"item": c.item, "ok": c.ok, "detail": c.detail}
                       for c in (loop.report.checks if loop.report else [])],
         "duration_s": loop.duration_s, "run_s": run_s,
         "wbc_loop": loop.wbc_stats.summary(),
         "nmpc_loop": loop.nmpc.stats.summary(),
-        "wbc_overruns": loop.pacer.overruns if loop.pacer else 0,
-        "nmpc_updates": loop.nmpc.updates, "nmpc_deadline_misses": loop.nmpc.deadline_misses,
-        "nmpc_failed_updates": loop.nmpc.solver_failures,
-        "nmpc_margin_flags": loop.nmpc.margin_flags,
-        "torque_saturations": loop.saturations,
-        "time_scale": loop.config.sim.time_scale if backend is not None else 1.0,
+        "wbc_overruns": loop.clock.overruns,
+        "time_scale": backend.config.sim.time_scale if backend is not None else 1.0,
         "payload": payload_progress(loop),
         "robot_min_height_running_m": {name: min(h) if h else None
                                        for name, h in loop.heights.items()},
@@ -190,7 +219,7 @@ def cpu_seconds() -> dict[str, float]:
     return result
 
 
-def payload_progress(loop: DeployLoop) -> dict[str, Any]:
+def payload_progress(loop: ControlLoop) -> dict[str, Any]:
     """Payload positions [m] (MoCap) at the start and end of RUNNING, the goal, and how much
     closer to the goal it got."""
     goal = loop.control.reference.goal_m()

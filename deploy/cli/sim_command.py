@@ -13,8 +13,8 @@ from deploy.config.scenario import Scenario, load_scenario
 from deploy.recording.flight_recorder import FlightRecorder, RecorderSettings
 from deploy.recording.run_record import default_log_path, open_run_recorder
 from deploy.runtime.codegen_cache import CompiledCodeCache
+from deploy.runtime.sim_run import SimRun, summary_line
 from deploy.runtime.stop_request import StopRequest
-from deploy.runtime.team_loop import TeamLoop, summary_line
 
 
 def scenario_from_args(args: argparse.Namespace) -> Scenario:
@@ -43,7 +43,7 @@ def run_sim(args: argparse.Namespace, base_settings: MpcSettings) -> int:
     print(f"porter sim: scenario {scenario.name!r}, {len(scenario.team)} robots, "
           f"{scenario.controller.mode} NMPC, {scenario.duration_s:g} s on MuJoCo "
           "(the first start compiles the NLPs, about a minute each)", file=sys.stderr)
-    loop = TeamLoop(scenario, CompiledCodeCache(), base_settings)
+    loop = SimRun(scenario, CompiledCodeCache(), base_settings)
     recorder: FlightRecorder | None = None
     if not args.no_record:
         path = Path(args.record) if args.record else default_log_path(scenario)
@@ -65,7 +65,7 @@ def run_sim(args: argparse.Namespace, base_settings: MpcSettings) -> int:
     stop = StopRequest()
     try:
         with stop.installed():
-            summary = loop.run(progress, stop)
+            summary = loop.run(progress, stop, verbose=show)
     finally:  # Ctrl-C, SIGTERM (raised as KeyboardInterrupt by the CLI) and errors alike
         loop.close()
         if recorder is not None:

@@ -18,10 +18,11 @@ import ipaddress
 from pathlib import Path
 from typing import Annotated, Literal
 
-from pydantic import BaseModel, ConfigDict, Field, ValidationError, model_validator
+from pydantic import Field, ValidationError, model_validator
 from pydantic_core import InitErrorDetails, PydanticCustomError
 
 from core.model.conventions import PAYLOAD_NAME
+from core.model.strict_model import StrictModel
 from deploy.config.files import ConfigError, load_settings
 from deploy.config.scenario import Scenario, load_scenario, scenario_path, shipped_scenarios
 from deploy.recording.flight_recorder import RecorderSettings
@@ -31,11 +32,7 @@ from drivers.natnet.protocol import COMMAND_PORT, DATA_PORT, MULTICAST_GROUP
 CONFIG_DIR = Path(__file__).parent / "deployments"
 
 
-class _Strict(BaseModel):
-    model_config = ConfigDict(extra="forbid", frozen=True)
-
-
-class Go2Link(_Strict):
+class Go2Link(StrictModel):
     """A Go2 over CycloneDDS (``drivers.unitree.go2_driver``): ``<topic_prefix>/rt/lowstate`` etc."""
 
     driver: Literal["go2"]
@@ -47,7 +44,7 @@ class Go2Link(_Strict):
     foot_force_n_per_count: float = Field(1.0, gt=0)  # UNVERIFIED scale of the raw counts
 
 
-class A1Link(_Strict):
+class A1Link(StrictModel):
     """An A1 over UDP (``drivers.unitree.a1_driver``, unitree_legged_sdk 3.3 low level)."""
 
     driver: Literal["a1"]
@@ -62,7 +59,7 @@ class A1Link(_Strict):
 RobotLink = Annotated[Go2Link | A1Link, Field(discriminator="driver")]
 
 
-class MocapConfig(_Strict):
+class MocapConfig(StrictModel):
     """OptiTrack NatNet (``drivers.natnet.client``). ``bodies`` maps porter's names (robot
     names, ``payload``) to Motive rigid-body names (default: the same name); ``body_ids`` maps
     Motive names to streaming ids (None: learnt from MODELDEF). The rigid body's pivot must be
@@ -81,7 +78,7 @@ class MocapConfig(_Strict):
     velocity_window_s: float = Field(0.08, gt=0)  # least-squares velocity from poses this old
 
 
-class CanConfig(_Strict):
+class CanConfig(StrictModel):
     """python-can bus of the e-stop heartbeat and the coupling F/T sensors."""
 
     interface: str = "socketcan"
@@ -89,7 +86,7 @@ class CanConfig(_Strict):
     force_torque: bool = True  # F/T sensors present: robot i of ``robots:`` is sensor i
 
 
-class PostureConfig(_Strict):
+class PostureConfig(StrictModel):
     """Stand up / sit down: joint PD targets interpolated (smoothstep) between the measured
     posture and the SRDF standing posture, or the sitting posture (base lowered by
     ``sit_lowering_m`` with the feet in place)."""
@@ -103,19 +100,19 @@ class PostureConfig(_Strict):
     final_damping_s: float = Field(0.5, ge=0)  # damping after sitting down, before exit
 
 
-class RatesConfig(_Strict):
+class RatesConfig(StrictModel):
     wbc_hz: float = Field(500.0, gt=0)
     nmpc_hz: float = Field(60.0, gt=0)
     max_plan_age_s: float = Field(0.25, gt=0)  # older active plan while running: safe stop
 
 
-class PreflightConfig(_Strict):
+class PreflightConfig(StrictModel):
     timeout_s: float = Field(5.0, gt=0)  # wait this long for every link before reporting
     max_joint_velocity_rad_s: float = Field(1.0, gt=0)  # robots must be at rest
     start_tolerance_m: float = Field(0.3, gt=0)  # payload this close to the scenario's start
 
 
-class SimFault(_Strict):
+class SimFault(StrictModel):
     """A fault the simulated world injects ``at_s`` simulated seconds after it starts running
     (tests and drills of the safety stop): ``estop_press`` (the CAN node's heartbeats say
     "stopped"), ``heartbeat_loss`` (they stop), ``mocap_loss`` (NatNet frames stop),
@@ -132,7 +129,7 @@ class SimFault(_Strict):
         return self
 
 
-class SimConfig(_Strict):
+class SimConfig(StrictModel):
     """``--backend sim`` only: the MuJoCo world behind the fakes (``deploy.sim_backend.backend``)."""
 
     # simulated seconds per wall-clock second, for the world and for the loop's clock (which
@@ -154,7 +151,7 @@ class SimConfig(_Strict):
     faults: list[SimFault] = []  # injected while running (see SimFault)
 
 
-class DeployConfig(_Strict):
+class DeployConfig(StrictModel):
     """One team's deployment. See the module docstring for the network rule."""
 
     scenario: str

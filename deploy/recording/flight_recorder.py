@@ -23,18 +23,18 @@ from typing import Any
 
 from mcap.writer import CompressionType, Writer
 from mcap_protobuf.schema import register_schema
-from pydantic import BaseModel, ConfigDict, Field
+from pydantic import Field
 
+from core.model.strict_model import StrictModel
 from deploy.recording.log_format import EVENTS, PROFILE, SUMMARY_METADATA, to_nanoseconds
 from deploy.recording.messages import porter_log_pb2 as pb
 
 Sink = Callable[[str, Any, int], None]  # (topic, protobuf message, log time [ns])
 
 
-class RecorderSettings(BaseModel):
+class RecorderSettings(StrictModel):
     """Flight-recorder options (``recorder:`` in YAML)."""
 
-    model_config = ConfigDict(extra="forbid")
     queue_size: int = Field(50_000, ge=1, description="messages buffered before dropping")
     chunk_size_bytes: int = Field(1 << 20, ge=1024, description="uncompressed chunk size")
     flush_interval_s: float = Field(1.0, gt=0.0,

@@ -56,6 +56,21 @@ class LoopRecording:
     def event(self, time_s: float, text: str, level: int = pb.Event.INFO) -> None:
         self.recorder.event(time_s, text, level=level)
 
+    def error(self, time_s: float, text: str) -> None:
+        self.event(time_s, text, pb.Event.ERROR)
+
+    def transition(self, time_s: float, text: str, fault: bool) -> None:
+        """A safety state transition (source ``safety``; a safe stop is an error)."""
+        self.recorder.event(time_s, text, source="safety",
+                            level=pb.Event.ERROR if fault else pb.Event.INFO)
+
+    def robot_tick(self, time_s: float, robot: str, measurement: RobotMeasurement,
+                   command: JointCommand) -> None:
+        """A tick without a WBC step (posture moves, damping): state and command only."""
+        topics = self._topics[robot]
+        self.recorder.log(topics["state"], fmt.robot_state(robot, measurement), time_s)
+        self.recorder.log(topics["command"], fmt.joint_command(time_s, robot, command), time_s)
+
     def wbc_tick(self, time_s: float, robot: str, measurement: RobotMeasurement,
                  command: JointCommand, output: WbcOutput, stance: np.ndarray,
                  foot_targets_m: np.ndarray) -> None:
@@ -145,9 +160,18 @@ class LoopRecording:
         return True
 
     def ground_truth(self, time_s: float, poses: dict[str, tuple[np.ndarray, np.ndarray]],
-                     message: pb.GroundTruth) -> None:
+                     payload_yaw_rad: float, desired_payload_state: np.ndarray,
+                     h_m: np.ndarray, coupling_error_m: np.ndarray) -> None:
+        """The simulator's truth: every body's pose (``/tf``), the payload's pose against the
+        reference state (12,), h of every (body, obstacle) pair and each coupling's error."""
         self.recorder.log(fmt.TF, fmt.frame_transforms(time_s, poses), time_s)
-        self.recorder.log(fmt.GROUND_TRUTH, message, time_s)
+        self.recorder.log(fmt.GROUND_TRUTH, pb.GroundTruth(
+            time_s=time_s, payload_position_in_world_m=poses[PAYLOAD_NAME][0],
+            payload_yaw_rad=payload_yaw_rad,
+            desired_payload_position_in_world_m=desired_payload_state[0:3],
+            desired_payload_yaw_rad=desired_payload_state[8], pair_names=self.pair_names,
+            h_m=np.asarray(h_m).reshape(-1), robot_names=self.robot_names,
+            coupling_error_m=coupling_error_m), time_s)
 
     def _obstacle_scene(self, time_s: float) -> object:
         return fmt.obstacle_scene(time_s, self.obstacles, self.safety_distance_m,

@@ -11,6 +11,7 @@ from typing import TYPE_CHECKING
 from core.lazy_exports import lazy_exports
 
 if TYPE_CHECKING:
+    from deploy.runtime.clock import LockstepClock, LoopClock, PacedClock
     from deploy.runtime.codegen_cache import (
         CompilationError,
         CompiledCodeCache,
@@ -24,34 +25,39 @@ if TYPE_CHECKING:
         measurement_state,
         mocap_state,
     )
-    from deploy.runtime.deploy_loop import DeployLoop
     from deploy.runtime.links import MocapTracker, TeamLinks, finite_or_none, open_links
-    from deploy.runtime.nmpc_schedule import NmpcSchedule
+    from deploy.runtime.loop import SATURATION_MARGIN, ControlLoop, LoopHooks, LoopSettings
+    from deploy.runtime.nmpc_lockstep import LockstepNmpc
+    from deploy.runtime.nmpc_schedule import Flags, NmpcHooks, NmpcRunner, NmpcSchedule
     from deploy.runtime.nmpc_thread import NmpcResult, NmpcThread
     from deploy.runtime.process_executor import ProcessExecutor
     from deploy.runtime.run_metrics import RunMetrics
+    from deploy.runtime.sim_run import WBC_DECIMATION, SimRun, summary_line
     from deploy.runtime.stop_request import StopRequest
-    from deploy.runtime.team_loop import SETTLE_S, TeamLoop, summary_line
     from deploy.runtime.timing import Pacer, PeriodStats
 
 _SOURCES = {
+    "deploy.runtime.clock": ["LockstepClock", "LoopClock", "PacedClock"],
     "deploy.runtime.codegen_cache": ["CompilationError", "default_cache_directory",
         "CompiledCodeCache"],
     "deploy.runtime.controller": ["RobotControl", "NmpcDecision", "WbcStep", "measurement_state",
         "mocap_state", "TeamController"],
-    "deploy.runtime.deploy_loop": ["DeployLoop"],
     "deploy.runtime.links": ["MocapTracker", "TeamLinks", "open_links", "finite_or_none"],
-    "deploy.runtime.nmpc_schedule": ["NmpcSchedule"],
+    "deploy.runtime.loop": ["ControlLoop", "LoopHooks", "LoopSettings", "SATURATION_MARGIN"],
+    "deploy.runtime.nmpc_lockstep": ["LockstepNmpc"],
+    "deploy.runtime.nmpc_schedule": ["Flags", "NmpcHooks", "NmpcRunner", "NmpcSchedule"],
     "deploy.runtime.nmpc_thread": ["NmpcResult", "NmpcThread"],
     "deploy.runtime.process_executor": ["ProcessExecutor"],
     "deploy.runtime.run_metrics": ["RunMetrics"],
+    "deploy.runtime.sim_run": ["WBC_DECIMATION", "SimRun", "summary_line"],
     "deploy.runtime.stop_request": ["StopRequest"],
-    "deploy.runtime.team_loop": ["SETTLE_S", "TeamLoop", "summary_line"],
     "deploy.runtime.timing": ["Pacer", "PeriodStats"],
 }
-__all__ = ["CompilationError", "CompiledCodeCache", "DeployLoop", "MocapTracker", "NmpcDecision",
-           "NmpcResult", "NmpcSchedule", "NmpcThread", "Pacer", "PeriodStats", "ProcessExecutor",
-           "RobotControl", "RunMetrics", "SETTLE_S", "StopRequest", "TeamController", "TeamLinks",
-           "TeamLoop", "WbcStep", "default_cache_directory", "finite_or_none", "measurement_state",
-           "mocap_state", "open_links", "summary_line"]
+__all__ = ["CompilationError", "CompiledCodeCache", "ControlLoop", "Flags", "LockstepClock",
+           "LockstepNmpc", "LoopClock", "LoopHooks", "LoopSettings", "MocapTracker", "NmpcDecision",
+           "NmpcHooks", "NmpcResult", "NmpcRunner", "NmpcSchedule", "NmpcThread", "PacedClock",
+           "Pacer", "PeriodStats", "ProcessExecutor", "RobotControl", "RunMetrics",
+           "SATURATION_MARGIN", "SimRun", "StopRequest", "TeamController", "TeamLinks",
+           "WBC_DECIMATION", "WbcStep", "default_cache_directory", "finite_or_none",
+           "measurement_state", "mocap_state", "open_links", "summary_line"]
 __getattr__ = lazy_exports(__name__, _SOURCES)

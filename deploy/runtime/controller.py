@@ -1,5 +1,5 @@
-"""The team's control logic, shared by the simulated loop (``deploy.runtime.team_loop``) and the robots
-(``deploy.runtime.deploy_loop``): NMPC inputs from measured data, the NMPC, and each robot's WBC tick.
+"""The team's control logic, run by the one control loop (``deploy.runtime.loop``) in
+simulation and on robots: NMPC inputs from measured data, the NMPC, and each robot's WBC tick.
 
 No I/O and no waiting: callers read the drivers and the MoCap, pass the measurements in, and
 send the returned joint commands. World frame, SI units; times in seconds on the caller's

@@ -23,12 +23,20 @@ from dataclasses import dataclass, field
 import can
 import numpy as np
 
+from core.estimation.base_velocity import BaseVelocityEstimator
 from core.model.conventions import PAYLOAD_NAME
 from deploy.config.deploy_config import DeployConfig, Go2Link
 from drivers.can.bus import EstopMonitor, ForceTorqueSensors
-from drivers.interfaces import MocapFrame
+from drivers.interfaces import (
+    EstopSource,
+    MocapFrame,
+    MocapSource,
+    RobotDriver,
+    WrenchSensors,
+)
 from drivers.link_errors import DriverError
 from drivers.natnet.client import NatNetClient, NatNetClientConfig, NatNetError
+from drivers.robot_descriptions import load_pinocchio_model
 from drivers.unitree.a1_driver import A1Driver
 from drivers.unitree.go2_driver import Go2Driver
 
@@ -41,7 +49,7 @@ class MocapTracker:
     was last seen [s on ``clock``], and each body's recent positions for its velocity.
     ``poll`` (once per loop tick, loop thread) takes in a new frame if there is one."""
 
-    def __init__(self, client: NatNetClient, bodies: dict[str, str], window_s: float,
+    def __init__(self, client: MocapSource, bodies: dict[str, str], window_s: float,
                  clock: Clock) -> None:
         self.client = client
         self.bodies = bodies  # porter name -> Motive name
@@ -112,24 +120,27 @@ class MocapTracker:
 
 @dataclass
 class TeamLinks:
-    """Open links; ``problems`` names the ones that could not be opened."""
+    """Open links, as the loop sees them (``drivers.interfaces`` protocols); ``problems``
+    names the ones that could not be opened. ``mocap`` is the NatNet client behind ``tracker``
+    (None in the in-process simulation); ``base_velocity`` fuses the base velocity of the
+    robots whose driver measures none; ``sport_mode`` how each Go2's motion switcher answered
+    the release request; ``closers`` release what the links hold."""
 
-    drivers: dict[str, Go2Driver | A1Driver]
+    drivers: dict[str, RobotDriver]
     mocap: NatNetClient | None
     tracker: MocapTracker | None
-    estop: EstopMonitor | None
-    force_torque: ForceTorqueSensors | None
+    estop: EstopSource | None
+    force_torque: WrenchSensors | None
     problems: list[str] = field(default_factory=list)
+    base_velocity: dict[str, BaseVelocityEstimator] = field(default_factory=dict)
+    sport_mode: dict[str, str] = field(default_factory=dict)
+    closers: list[Callable[[], None]] = field(default_factory=list)
 
     def close(self) -> None:
-        for reader in (self.force_torque, self.estop):
-            if reader is not None:
-                reader.close()
-        if self.mocap is not None:
-            self.mocap.close()
+        for close in self.closers:
+            close()
         for driver in self.drivers.values():
-            if isinstance(driver, A1Driver):
-                driver.close()
+            driver.close()
 
 
 def open_links(config: DeployConfig, clock: Clock = time.monotonic) -> TeamLinks:
@@ -151,15 +162,19 @@ def open_links(config: DeployConfig, clock: Clock = time.monotonic) -> TeamLinks
         tracker = MocapTracker(mocap, bodies, mocap_config.velocity_window_s, clock)
     except NatNetError as error:
         problems.append(f"MoCap: {error}")
-    drivers: dict[str, Go2Driver | A1Driver] = {}
+    drivers: dict[str, RobotDriver] = {}
+    sport_mode: dict[str, str] = {}
     for name, link in config.robots.items():
         source = tracker.base_state(name) if tracker is not None else None
         try:
             if isinstance(link, Go2Link):
-                drivers[name] = Go2Driver(
+                go2 = Go2Driver(
                     name, link.domain_id, config.network_interface, link.topic_prefix,
                     link.link_timeout_s, link.contact_threshold_n, link.foot_force_n_per_count,
                     base_state_source=source, clock=clock)
+                drivers[name] = go2
+                if link.release_sport_mode:
+                    sport_mode[name] = _release_sport_mode(go2)
             else:
                 drivers[name] = A1Driver(
                     name, link.robot_address, link.local_address, link.local_port,
@@ -177,7 +192,20 @@ def open_links(config: DeployConfig, clock: Clock = time.monotonic) -> TeamLinks
     except (can.CanError, OSError, ValueError) as error:
         problems.append(f"CAN: cannot open {config.can.interface} channel "
                         f"{config.can.channel!r}: {error}")
-    return TeamLinks(drivers, mocap, tracker, estop, force_torque, problems)
+    closers = [reader.close for reader in (force_torque, estop, mocap) if reader is not None]
+    base_velocity = {name: BaseVelocityEstimator(load_pinocchio_model(
+        config.robots[name].driver)) for name in drivers}
+    return TeamLinks(drivers, mocap, tracker, estop, force_torque, problems, base_velocity,
+                     sport_mode, closers)
+
+
+def _release_sport_mode(driver: Go2Driver) -> str:
+    """Ask the Go2's motion switcher to release the sport mode (low-level control needs it)."""
+    try:
+        code = driver.release_sport_mode()
+    except DriverError as error:
+        return str(error)
+    return "released" if code == 0 else f"refused, code {code}"
 
 
 def finite_or_none(value: float) -> float | None:

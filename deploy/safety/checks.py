@@ -19,10 +19,11 @@ from functools import cache
 
 import numpy as np
 import pinocchio as pin
-from pydantic import BaseModel, ConfigDict, Field
+from pydantic import Field
 
 from core.model.conventions import JOINT_COUNT, LEG_JOINT_NAMES, LEG_NAMES
 from core.model.robot_parameters import leg_joint_indices
+from core.model.strict_model import StrictModel
 from drivers.interfaces import JointCommand, RobotMeasurement
 from drivers.robot_descriptions import (
     FOOT_RADIUS_M,
@@ -35,10 +36,9 @@ _TORQUE_TOLERANCE_NM = 1e-9  # a command exactly at the limit is allowed
 _MEASUREMENT_FIELDS = tuple(field.name for field in fields(RobotMeasurement))
 
 
-class SupervisorSettings(BaseModel):
+class SupervisorSettings(StrictModel):
     """Fault thresholds of the safety supervisor (``safety:`` in deploy configs)."""
 
-    model_config = ConfigDict(extra="forbid")
     mocap_timeout_s: float = Field(0.1, gt=0.0, description="oldest MoCap frame tolerated")
     heartbeat_timeout_s: float = Field(
         0.1, gt=0.0, description="informational: the EstopMonitor applies its own timeout")

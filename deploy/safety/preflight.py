@@ -76,7 +76,7 @@ def evaluate(config: DeployConfig, links: TeamLinks, limits: dict[str, RobotLimi
             continue
         measurement = measurements[name]
         checks.append(PreflightCheck(f"robot {name} link", True,
-                                     f"{links.drivers[name].link.received} states received"))
+                                     f"a state received at {measurement.time_s:.3f} s"))
         checks.append(_joint_check(name, measurement, limits[name], config))
     checks += _mocap_checks(config, links)
     checks += _can_checks(config, links)

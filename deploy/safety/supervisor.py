@@ -4,13 +4,15 @@
                       |            |         |            |
                       +------------+---------+------------+--> SAFE_STOP -> DONE
 
-The deploy loop requests the planned transitions (``begin_stand_up``, ``arm``, ``begin_run``,
-``begin_sit_down`` from STANDING_UP, ARMED or RUNNING, ``finish`` from SITTING_DOWN, SAFE_STOP or
-PREFLIGHT); any other request raises ``SafetyError``. Every WBC tick it calls ``check`` with
-``SafetyInputs`` and passes its joint commands through ``filter_commands``. In STANDING_UP,
-ARMED, RUNNING and SITTING_DOWN any fault (``deploy.safety.checks``) moves to SAFE_STOP, which
-is latched: only ``finish`` leaves it. From then on ``filter_commands`` returns pure joint
-damping (torque 0, kp 0, kd ``damping_kd``, velocity 0) whatever the controller asks.
+The loop requests the planned transitions (``begin_stand_up``, ``arm``, ``begin_run``,
+``begin_sit_down`` from STANDING_UP, ARMED or RUNNING, ``finish`` from SITTING_DOWN, SAFE_STOP
+or PREFLIGHT; in simulation, where the team starts standing, ``start_standing`` PREFLIGHT ->
+RUNNING and ``end_standing`` RUNNING -> DONE); any other request raises ``SafetyError``. Every
+WBC tick it calls ``check`` with ``SafetyInputs`` and passes its joint commands through
+``filter_commands``. In STANDING_UP, ARMED, RUNNING and SITTING_DOWN any fault
+(``deploy.safety.checks``) moves to SAFE_STOP, which is latched: only ``finish`` leaves it. From
+then on ``filter_commands`` returns pure joint damping (torque 0, kp 0, kd ``damping_kd``,
+velocity 0) whatever the controller asks.
 
 Which checks apply: all of them in every active state, except the base height (ARMED and
 RUNNING only: the robot lies down before standing up and after sitting down) and a MoCap that
@@ -72,6 +74,9 @@ _REQUESTS: dict[str, tuple[frozenset[SafetyState], SafetyState]] = {
     "begin_sit_down": (ACTIVE_STATES - {SafetyState.SITTING_DOWN}, SafetyState.SITTING_DOWN),
     "finish": (frozenset({SafetyState.PREFLIGHT, SafetyState.SITTING_DOWN,
                           SafetyState.SAFE_STOP}), SafetyState.DONE),
+    # simulation: the team starts standing and the run ends standing
+    "start_standing": (frozenset({SafetyState.PREFLIGHT}), SafetyState.RUNNING),
+    "end_standing": (frozenset({SafetyState.RUNNING}), SafetyState.DONE),
 }
 
 
@@ -125,6 +130,7 @@ class SafetySupervisor:
         self._deadlines = DeadlineOverrunWindow(settings.deadline_overrun_budget,
                                                 settings.deadline_window_s)
         self._has_been_armed = False
+        self._started_standing = False
 
     # --- requested transitions ------------------------------------------------------------
     def begin_stand_up(self, time_s: float) -> None:
@@ -142,6 +148,18 @@ class SafetySupervisor:
     def finish(self, time_s: float) -> None:
         self._request("finish", time_s)
 
+    def start_standing(self, time_s: float) -> None:
+        """Simulation only: the team starts standing, so PREFLIGHT -> RUNNING directly."""
+        self._request("start_standing", time_s)
+        self._started_standing = True
+
+    def end_standing(self, time_s: float) -> None:
+        """Simulation only: a run started standing ends standing, RUNNING -> DONE."""
+        if not self._started_standing:
+            raise SafetyError("cannot end_standing: the run did not start standing (robots "
+                              "sit down: begin_sit_down)")
+        self._request("end_standing", time_s)
+
     def trigger_safe_stop(self, time_s: float, cause: str) -> None:
         """Safe stop for a reason found outside the supervisor (operator abort, exception);
         ignored unless in an active state."""
@@ -155,7 +173,7 @@ class SafetySupervisor:
                 f"cannot {request} in state {self.state.name}: it is allowed only in "
                 f"{', '.join(sorted(s.name for s in allowed))}"
                 + (f" (safe stop: {self.fault})" if self.fault else ""))
-        self._has_been_armed |= target == SafetyState.ARMED
+        self._has_been_armed |= target in (SafetyState.ARMED, SafetyState.RUNNING)
         self._move(time_s, target, f"requested: {request}")
 
     def _trip(self, time_s: float, cause: str) -> None:

@@ -11,13 +11,7 @@ from typing import TYPE_CHECKING
 from core.lazy_exports import lazy_exports
 
 if TYPE_CHECKING:
-    from drivers.can.bus import (
-        CanCounters,
-        EstopMonitor,
-        EstopStatus,
-        ForceTorqueSensors,
-        WrenchReading,
-    )
+    from drivers.can.bus import CanCounters, EstopMonitor, ForceTorqueSensors
     from drivers.can.fake import FakeCanNode
     from drivers.can.protocol import (
         CanFrameError,
@@ -32,15 +26,13 @@ if TYPE_CHECKING:
     )
 
 _SOURCES = {
-    "drivers.can.bus": ["CanCounters", "EstopStatus", "EstopMonitor", "WrenchReading",
-        "ForceTorqueSensors"],
+    "drivers.can.bus": ["CanCounters", "EstopMonitor", "ForceTorqueSensors"],
     "drivers.can.fake": ["FakeCanNode"],
     "drivers.can.protocol": ["EstopState", "CanFrameError", "EstopHeartbeat", "WrenchHalf",
         "encode_estop_heartbeat", "decode_estop_heartbeat", "is_force_torque_id", "encode_wrench",
         "decode_wrench_half"],
 }
 __all__ = ["CanCounters", "CanFrameError", "EstopHeartbeat", "EstopMonitor", "EstopState",
-           "EstopStatus", "FakeCanNode", "ForceTorqueSensors", "WrenchHalf", "WrenchReading",
-           "decode_estop_heartbeat", "decode_wrench_half", "encode_estop_heartbeat",
-           "encode_wrench", "is_force_torque_id"]
+           "FakeCanNode", "ForceTorqueSensors", "WrenchHalf", "decode_estop_heartbeat",
+           "decode_wrench_half", "encode_estop_heartbeat", "encode_wrench", "is_force_torque_id"]
 __getattr__ = lazy_exports(__name__, _SOURCES)

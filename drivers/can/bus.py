@@ -21,7 +21,6 @@ from dataclasses import dataclass, field
 from typing import Self
 
 import can
-import numpy as np
 
 from drivers.can.protocol import (
     ESTOP_HEARTBEAT_ID,
@@ -34,6 +33,7 @@ from drivers.can.protocol import (
     decode_wrench_half,
     is_force_torque_id,
 )
+from drivers.interfaces import EstopStatus, WrenchReading
 
 DEFAULT_CHANNEL = "porter"
 _NOTIFIER_POLL_S = 0.01
@@ -103,12 +103,6 @@ class _CanReader(can.Listener):
         self.close()
 
 
-@dataclass(frozen=True)
-class EstopStatus:
-    run_allowed: bool
-    reason: str
-
-
 class EstopMonitor(_CanReader):
     """Run is allowed only while valid heartbeats say "run" and the last one is at most
     ``timeout_s`` old. A heartbeat whose counter repeats the previous one (a stuck sender)
@@ -164,18 +158,6 @@ class EstopMonitor(_CanReader):
 
     def reason(self) -> str:
         return self.status().reason
-
-
-@dataclass(frozen=True)
-class WrenchReading:
-    """One robot's measured coupling wrench: force [N] and torque about the coupling point
-    [N m] its coupling applies to the payload, sensor frame (world-aligned for now)."""
-
-    force_n: np.ndarray
-    torque_nm: np.ndarray
-    sample_counter: int
-    saturated: bool
-    receive_time_s: float
 
 
 class ForceTorqueSensors(_CanReader):

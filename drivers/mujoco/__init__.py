@@ -19,13 +19,21 @@ if TYPE_CHECKING:
         robot_urdf_text,
         urdf_effort_limits_nm,
     )
-    from drivers.mujoco.simulation import SimMocap, SimRobotDriver, TeamSimulation
+    from drivers.mujoco.simulation import (
+        SimMocap,
+        SimRobotDriver,
+        SimulatedEstop,
+        SimWrenchSensors,
+        TeamSimulation,
+    )
 
 _SOURCES = {
     "drivers.mujoco.scene": ["robot_urdf_text", "urdf_effort_limits_nm", "robot_spec",
         "RobotIndices", "TeamScene", "build_team_scene"],
-    "drivers.mujoco.simulation": ["TeamSimulation", "SimRobotDriver", "SimMocap"],
+    "drivers.mujoco.simulation": ["TeamSimulation", "SimRobotDriver", "SimMocap",
+        "SimWrenchSensors", "SimulatedEstop"],
 }
-__all__ = ["RobotIndices", "SimMocap", "SimRobotDriver", "TeamScene", "TeamSimulation",
-           "build_team_scene", "robot_spec", "robot_urdf_text", "urdf_effort_limits_nm"]
+__all__ = ["RobotIndices", "SimMocap", "SimRobotDriver", "SimWrenchSensors", "SimulatedEstop",
+           "TeamScene", "TeamSimulation", "build_team_scene", "robot_spec", "robot_urdf_text",
+           "urdf_effort_limits_nm"]
 __getattr__ = lazy_exports(__name__, _SOURCES)

@@ -15,13 +15,21 @@ Deterministic: the same scene, seed, call sequence and commands give identical t
 
 from __future__ import annotations
 
+import math
 from dataclasses import dataclass
 
 import mujoco
 import numpy as np
 
-from core.model.conventions import FOOT_COUNT, PAYLOAD_NAME
-from drivers.interfaces import JointCommand, MocapFrame, Pose, RobotMeasurement
+from core.model.conventions import FOOT_COUNT, JOINT_COUNT, PAYLOAD_NAME
+from drivers.interfaces import (
+    EstopStatus,
+    JointCommand,
+    MocapFrame,
+    Pose,
+    RobotMeasurement,
+    WrenchReading,
+)
 from drivers.mujoco.scene import RobotIndices, TeamScene
 
 _PYRAMIDAL_CONE = int(mujoco.mjtCone.mjCONE_PYRAMIDAL)
@@ -96,9 +104,14 @@ class TeamSimulation:
         """The ``RobotDriver`` of robot ``name`` (a team agent name)."""
         return SimRobotDriver(self, self.scene.robot(name))
 
-    def mocap(self) -> SimMocap:
-        """The ``MocapSource``: every robot base (by robot name) and ``"payload"``."""
-        return SimMocap(self)
+    def mocap(self, rate_hz: float | None = None) -> SimMocap:
+        """The ``MocapSource``: every robot base (by robot name) and ``"payload"``; a new
+        frame at ``rate_hz`` of simulated time (None: a fresh frame at every call)."""
+        return SimMocap(self, rate_hz)
+
+    def wrench_sensors(self) -> SimWrenchSensors:
+        """The ``WrenchSensors``: each coupling's transmitted wrench, exact."""
+        return SimWrenchSensors(self)
 
     def set_command(self, name: str, command: JointCommand) -> None:
         """Store robot ``name``'s joint command; applied from the next physics step on."""
@@ -268,15 +281,68 @@ class SimRobotDriver:
     def send(self, command: JointCommand) -> None:
         self._simulation.set_command(self._robot.name, command)
 
+    def send_damping(self, kd: float) -> None:
+        self.send(JointCommand(kd=np.full(JOINT_COUNT, kd)))
+
+    def close(self) -> None:
+        """Nothing to release: the simulation is the link."""
+
 
 class SimMocap:
-    """``MocapSource`` of a ``TeamSimulation``: a fresh noisy frame of the current state."""
+    """``MocapSource`` of a ``TeamSimulation``: noisy frames of the current state, a new one
+    at every instant of a ``rate_hz`` grid of simulated time (the first call makes the first),
+    or at every call when ``rate_hz`` is None. Each frame draws its noise once."""
+
+    def __init__(self, simulation: TeamSimulation, rate_hz: float | None = None) -> None:
+        self._simulation = simulation
+        self._period_s = None if rate_hz is None else 1.0 / rate_hz
+        self._frame: MocapFrame | None = None
+        self._next = 0  # index of the next frame instant on the grid
+
+    def latest(self) -> MocapFrame | None:
+        t = self._simulation.time_s
+        if self._period_s is None:
+            return self._simulation._mocap_frame()
+        if self._frame is None or t >= self._next * self._period_s - 1e-9:
+            self._frame = self._simulation._mocap_frame()
+            self._next = int(np.floor(t / self._period_s + 1e-6)) + 1
+        return self._frame
+
+    def age_s(self) -> float:
+        if self._period_s is None:
+            return 0.0
+        return math.inf if self._frame is None else self._simulation.time_s - self._frame.time_s
+
+
+class SimWrenchSensors:
+    """``WrenchSensors`` of a ``TeamSimulation``: the wrench each coupling transmits now."""
 
     def __init__(self, simulation: TeamSimulation) -> None:
         self._simulation = simulation
+        self._count = 0
 
-    def latest(self) -> MocapFrame | None:
-        return self._simulation._mocap_frame()
+    def latest(self) -> dict[str, WrenchReading]:
+        self._count += 1
+        sim = self._simulation
+        readings = {}
+        for robot in sim.scene.robots:
+            force_n, torque_nm = sim.coupling_wrench(robot.name)
+            readings[robot.name] = WrenchReading(force_n, torque_nm, self._count, False,
+                                                 sim.time_s)
+        return readings
+
+
+class SimulatedEstop:
+    """``EstopSource`` of a simulation: no e-stop hardware, so run is allowed until ``press``."""
+
+    def __init__(self) -> None:
+        self._reason = ""
+
+    def press(self, reason: str = "pressed") -> None:
+        self._reason = reason
+
+    def status(self) -> EstopStatus:
+        return EstopStatus(not self._reason, self._reason or "run")
 
 
 def _rotation(quaternion_wxyz: np.ndarray) -> np.ndarray:

@@ -84,6 +84,9 @@ class UnitreeLowLevelDriver:
         """Safe stop: position loops off (PosStopF), tau = kd [N m s/rad] x (0 - dq)."""
         self.send_wire(damping_wire_command(kd, self.motor_mode))
 
+    def close(self) -> None:
+        """Release the link; subclasses with sockets or DDS entities override it."""
+
 
 class PeriodicThread:
     """Runs a list of calls every 1 / rate_hz s in a daemon thread (a fake's real-time mode)."""

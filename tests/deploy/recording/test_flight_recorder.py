@@ -25,7 +25,7 @@ from deploy.recording.log_reader import LogError, LogFile, recover
 from deploy.recording.messages import porter_log_pb2 as pb
 from deploy.recording.run_record import open_run_recorder
 from deploy.runtime.codegen_cache import CompiledCodeCache
-from deploy.runtime.team_loop import TeamLoop
+from deploy.runtime.sim_run import SimRun
 
 REPOSITORY = Path(__file__).resolve().parents[3]
 PORTER = [sys.executable, "-m", "deploy.cli"]
@@ -39,7 +39,7 @@ def recorded_run(tmp_path_factory: pytest.TempPathFactory) -> tuple[Path, list, 
         "duration_s": 0.4, "controller": scenario.controller.model_copy(
             update={"executor": "serial"})})
     path = tmp_path_factory.mktemp("log") / "run.mcap"
-    loop = TeamLoop(scenario, CompiledCodeCache())
+    loop = SimRun(scenario, CompiledCodeCache())
     logged: list = []
     recorder = open_run_recorder(path, scenario, loop.settings, loop.wbc_settings, "mujoco",
                                  RecorderSettings(warm_start_every=5),

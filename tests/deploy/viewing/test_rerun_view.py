@@ -22,7 +22,7 @@ from deploy.recording.log_reader import LogFile
 from deploy.recording.messages import porter_log_pb2 as pb
 from deploy.recording.run_record import open_run_recorder
 from deploy.runtime.codegen_cache import CompiledCodeCache
-from deploy.runtime.team_loop import TeamLoop
+from deploy.runtime.sim_run import SimRun
 from deploy.viewing.rerun_view import live_sink
 
 RERUN = Path(sys.executable).with_name("rerun")
@@ -55,7 +55,7 @@ def porter_log(tmp_path_factory: pytest.TempPathFactory) -> Path:
         "duration_s": 0.5,
         "controller": scenario.controller.model_copy(update={"executor": "serial"})})
     path = tmp_path_factory.mktemp("replay") / "narrow_passage.mcap"
-    loop = TeamLoop(scenario, CompiledCodeCache())
+    loop = SimRun(scenario, CompiledCodeCache())
     recorder = open_run_recorder(path, scenario, loop.settings, loop.wbc_settings, "mujoco")
     loop.attach_recorder(recorder)
     summary = None

@@ -1,135 +1,159 @@
-"""``porter deploy``'s loop: pre-flight, stand up, arm, run, sit down, under the safety supervisor.
+"""The one control loop of ``porter sim`` and ``porter deploy``, under the safety supervisor.
 
-One paced loop at ``rates.wbc_hz`` (500 Hz) in the calling thread, for every state:
-read every robot (a lost link is a fault, not an exception) and the MoCap; in ARMED / RUNNING
-pick up a finished NMPC plan and, at the 60 Hz instants when the NMPC thread is idle, submit
-the next decision (``deploy.runtime.nmpc_thread``: the WBC never waits for a plan, it tracks the newest
-finished one); ``SafetySupervisor.check``; the state's commands; ``filter_commands``; send;
-record. Times: the loop's clock (monotonic, seconds) minus the start of the run; the log uses
-the same times.
+One tick per ``rates.wbc_hz`` (500 Hz) on a ``LoopClock`` (``deploy.runtime.clock``): lockstep
+(simulated time, ``porter sim`` and tests) or paced (the wall clock scaled by ``time_scale``,
+``porter deploy``). Every tick, in every state: read every robot (a lost link is a fault, not
+an exception) and the MoCap; estimate (base velocity from leg odometry and MoCap for robots
+whose driver measures none, ``core.estimation.base_velocity``); in ARMED / RUNNING the NMPC
+schedule (``deploy.runtime.nmpc_schedule``: one timing grid, one plan hand-off, for a thread or
+for simulated time); ``SafetySupervisor.check``; the state's commands (posture moves, or each
+robot's WBC on the active plan), clipped when just past a torque limit; ``filter_commands``;
+send; record (``deploy.recording.loop_recording`` is the only writer of loop data). Times: the
+loop clock minus the start of the run; the log uses the same times.
 
-States (``deploy.safety.supervisor``): PREFLIGHT (limp commands solicit the A1's states; the
-checks of ``deploy.safety.preflight`` are evaluated each tick until all pass or ``preflight.timeout_s``)
--> STANDING_UP (joint PD to standing, ``deploy.safety.posture``, then ``posture.settle_s`` holding it;
-then the operator is asked) -> ARMED (holding; the first plan is computed) -> RUNNING (WBC on
-the plan, for ``duration_s`` or until a stop request) -> SITTING_DOWN (joint PD to sitting) ->
-DONE (joint damping for ``posture.final_damping_s``). Any fault -> SAFE_STOP (damping only,
-latched) -> DONE. Every transition goes to the flight recorder as an event (source
-``safety``). Besides the supervisor's checks, a plan older than ``rates.max_plan_age_s`` while
-RUNNING trips the safe stop (the NMPC has stalled).
+States (``deploy.safety.supervisor``), by ``sequence``:
+- ``deploy``: PREFLIGHT (limp commands solicit the A1's states; the ``preflight`` checks are
+  evaluated each tick until all pass or ``preflight_timeout_s``) -> STANDING_UP (joint PD to
+  standing, ``deploy.safety.posture``, then ``posture.settle_s`` holding it; then the operator
+  is asked) -> ARMED (holding; the first plan is computed) -> RUNNING (WBC on the plan, for
+  ``duration_s`` or until a stop request) -> SITTING_DOWN -> DONE (joint damping for
+  ``posture.final_damping_s``).
+- ``standing`` (simulation: the team starts standing): PREFLIGHT -> RUNNING on the first tick;
+  at ``duration_s`` or a stop request RUNNING -> DONE and the loop ends.
+In both, any fault -> SAFE_STOP (damping only, latched) -> DONE after ``final_damping_s``; a
+plan older than ``rates.max_plan_age_s`` while RUNNING trips the safe stop (NMPC stalled).
+Every transition goes to the flight recorder as an event (source ``safety``).
 """
 
 from __future__ import annotations
 
 import sys
-import time
 from collections.abc import Callable
-from dataclasses import replace
-from typing import TextIO
+from dataclasses import dataclass, replace
+from typing import Literal, Protocol, TextIO
 
 import numpy as np
 
 from core.estimation.base_velocity import BaseVelocityEstimator
 from core.model.conventions import PAYLOAD_NAME
-from deploy.config.deploy_config import DeployConfig
-from deploy.recording import log_format as fmt
-from deploy.recording.flight_recorder import FlightRecorder
+from deploy.config.deploy_config import PostureConfig, RatesConfig
 from deploy.recording.loop_recording import LoopRecording
-from deploy.recording.messages import porter_log_pb2 as pb
+from deploy.runtime.clock import LoopClock
 from deploy.runtime.controller import TeamController, WbcStep
 from deploy.runtime.links import TeamLinks
 from deploy.runtime.nmpc_schedule import NmpcSchedule
-from deploy.runtime.timing import Pacer, PeriodStats
+from deploy.runtime.timing import PeriodStats
 from deploy.safety.posture import PostureMove, sitting_posture, standing_posture
-from deploy.safety.preflight import PreflightReport, evaluate
+from deploy.safety.preflight import PreflightReport
 from deploy.safety.supervisor import (
     SafetyInputs,
     SafetyState,
     SafetySupervisor,
+    SupervisorSettings,
     Transition,
     robot_limits,
 )
 from drivers.interfaces import JointCommand, MocapFrame, RobotMeasurement
 from drivers.link_errors import DriverError, LinkLostError
-from drivers.robot_descriptions import load_pinocchio_model
-from drivers.unitree.go2_driver import Go2Driver
+
+__all__ = ["ControlLoop", "LoopHooks", "LoopSettings", "SATURATION_MARGIN"]
 
 SATURATION_MARGIN = 0.25  # commands up to 25 % past a torque limit are clipped to it
 Confirm = Callable[[], bool | None]  # None while the operator has not answered
+Preflight = Callable[[dict[str, RobotMeasurement], dict[str, str]], PreflightReport]
 S = SafetyState
 
 
-class DeployLoop:
-    """One deployment run; ``run()`` returns once the team is DONE."""
+@dataclass(frozen=True)
+class LoopSettings:
+    """The loop's rates, fault thresholds and postures (``porter deploy``: from its config)."""
 
-    def __init__(self, config: DeployConfig, control: TeamController, links: TeamLinks,
-                 recorder: FlightRecorder | None, confirm: Confirm, stop: Callable[[], bool],
-                 duration_s: float, clock: Callable[[], float] = time.monotonic,
-                 sleep: Callable[[float], None] = time.sleep, out: TextIO | None = None) -> None:
-        self.config, self.control, self.links = config, control, links
-        self.confirm, self.stop, self.duration_s = confirm, stop, duration_s
-        self.clock, self.sleep, self.out = clock, sleep, out
+    rates: RatesConfig
+    safety: SupervisorSettings
+    posture: PostureConfig
+    preflight_timeout_s: float = 5.0
+
+
+class LoopHooks(Protocol):
+    """What a simulation measures in the loop (``deploy.runtime.sim_run``)."""
+
+    def before_tick(self, t: float) -> None: ...
+    def wbc_stepped(self, steps: list[WbcStep]) -> None: ...
+
+
+class ControlLoop:
+    """One run; ``run()`` returns once the team is DONE."""
+
+    def __init__(self, control: TeamController, links: TeamLinks, settings: LoopSettings,
+                 clock: LoopClock, nmpc: NmpcSchedule, recording: LoopRecording | None,
+                 stop: Callable[[], bool], duration_s: float,
+                 sequence: Literal["deploy", "standing"] = "deploy",
+                 confirm: Confirm | None = None, preflight: Preflight | None = None,
+                 hooks: LoopHooks | None = None, out: TextIO | None = None,
+                 verbose: bool = True) -> None:
+        self.control, self.links, self.settings, self.clock = control, links, settings, clock
+        self.nmpc, self.recording, self.stop, self.duration_s = nmpc, recording, stop, duration_s
+        self.sequence, self.confirm, self.preflight = sequence, confirm, preflight
+        self.hooks, self.out, self.verbose = hooks, out, verbose
         self.names = control.robot_names
         types = {robot.name: robot.robot_type for robot in control.robots}
         self.limits = {name: robot_limits(types[name], name) for name in self.names}
         self.standing = {name: standing_posture(types[name]) for name in self.names}
-        self.velocity = {name: BaseVelocityEstimator(load_pinocchio_model(types[name]))
-                         for name in self.names}
-        self.sitting = {name: sitting_posture(types[name], config.posture.sit_lowering_m)
+        self.sitting = {name: sitting_posture(types[name], settings.posture.sit_lowering_m)
                         for name in self.names}
-        self.supervisor = SafetySupervisor(config.safety, list(self.limits.values()),
+        self.velocity: dict[str, BaseVelocityEstimator] = links.base_velocity
+        self.supervisor = SafetySupervisor(settings.safety, list(self.limits.values()),
                                            self._on_transition)
-        self.recording = None if recorder is None else LoopRecording(
-            recorder, self.names, control.obstacles,
-            [o.height_m for o in control.scenario.obstacles],
-            control.settings.safety.safety_distance_m, control.settings.sample_period_s,
-            np.asarray(control.scenario.payload.size_m))
-        self.nmpc = NmpcSchedule(control, config.rates.nmpc_hz, clock, self.recording,
-                                 links.force_torque)
-        self.wbc_stats = PeriodStats(1.0 / config.rates.wbc_hz)
+        self.wbc_stats = PeriodStats(1.0 / settings.rates.wbc_hz)
         self.required_bodies = [*self.names, PAYLOAD_NAME]
-        self.t0 = clock()
+        self.t0 = clock.now()
         self.since: dict[SafetyState, float] = {S.PREFLIGHT: 0.0}
         self.moves: dict[str, PostureMove] = {}
         self.saturations = dict.fromkeys(self.names, 0)  # ticks with a clipped torque
-        self.pacer: Pacer | None = None
         self.report: PreflightReport | None = None
-        self.sport_mode: dict[str, str] = {}
         self.frames: dict[str, MocapFrame] = {}  # at the start and the end of RUNNING
         self.heights: dict[str, list[float]] = {name: [] for name in self.names}
         self.ended_by = ""
+        self.stopped_early = False
 
     def now(self) -> float:
-        return self.clock() - self.t0
+        return self.clock.now() - self.t0
+
+    def outcome(self) -> dict:
+        """How the run ended, in both sequences: result, final state, safe-stop cause, every
+        transition, NMPC health and torque clipping (the shared part of both summaries)."""
+        supervisor, nmpc = self.supervisor, self.nmpc
+        return {
+            "result": self.ended_by, "final_state": supervisor.state.name,
+            "safe_stop": supervisor.fault or None,
+            "transitions": [f"{t.time_s:.3f} s {t.text}" for t in supervisor.transitions],
+            "nmpc_updates": nmpc.updates, "nmpc_deadline_misses": nmpc.deadline_misses,
+            "nmpc_failed_updates": nmpc.solver_failures,
+            "nmpc_margin_flags": nmpc.margin_flags,
+            "torque_saturations": dict(self.saturations),
+        }
 
     def say(self, text: str) -> None:
-        print(f"porter deploy: {text}", file=self.out or sys.stderr, flush=True)
+        if self.verbose:
+            command = "deploy" if self.sequence == "deploy" else "sim"
+            print(f"porter {command}: {text}", file=self.out or sys.stderr, flush=True)
 
     def _on_transition(self, transition: Transition) -> None:
         self.since[transition.target] = transition.time_s
         self.say(f"[{transition.time_s:7.3f} s] {transition.text}")
         if self.recording is not None:
-            level = pb.Event.ERROR if transition.target == S.SAFE_STOP else pb.Event.INFO
-            self.recording.recorder.event(transition.time_s, transition.text, source="safety",
-                                          level=level)
+            self.recording.transition(transition.time_s, transition.text,
+                                      transition.target == S.SAFE_STOP)
 
     # --- the run -------------------------------------------------------------------------
-    def run(self) -> None:
+    def run(self, start_text: str) -> None:
         if self.recording is not None:
-            self.recording.start(0.0, f"start: porter deploy, scenario {self.control.scenario.name}")
-        for name, driver in self.links.drivers.items():
-            link = self.config.robots[name]
-            if isinstance(driver, Go2Driver) and getattr(link, "release_sport_mode", False):
-                try:
-                    code = driver.release_sport_mode()
-                    self.sport_mode[name] = "released" if code == 0 else f"refused, code {code}"
-                except DriverError as error:
-                    self.sport_mode[name] = str(error)
+            self.recording.start(self.now(), start_text)
         self.since[S.PREFLIGHT] = self.now()  # the pre-flight timeout counts from here
-        pacer = self.pacer = Pacer(1.0 / self.config.rates.wbc_hz, self.clock, self.sleep)
+        self.clock.start()
         try:
             while not self._tick():
-                pacer.wait()
+                self.clock.wait()
         except BaseException as error:  # damp the robots, then let the error through
             self.supervisor.trigger_safe_stop(self.now(), f"exception: {error!r}")
             for _ in range(3):
@@ -140,37 +164,41 @@ class DeployLoop:
 
     def _tick(self) -> bool:
         """One loop period; True once the run is over."""
-        start = self.clock()
+        start = self.clock.now()
         t = start - self.t0
+        if self.hooks is not None:
+            self.hooks.before_tick(t)
         measurements, link_errors = self._read(t)
+        if self.sequence == "standing" and self._standing_transitions(t, measurements):
+            return True
         frame = self.links.tracker.poll() if self.links.tracker is not None else None
-        state = self.supervisor.state
         flags: tuple[bool | None, bool | None] = (None, None)
-        if state in (S.ARMED, S.RUNNING):
+        if self.supervisor.state in (S.ARMED, S.RUNNING):
             flags = self.nmpc.step(t, measurements, frame)
         estop = self.links.estop.status() if self.links.estop is not None else None
         age = self.links.tracker.age_s(self.required_bodies) if self.links.tracker else None
         self.supervisor.check(SafetyInputs(
-            t, estop.run_allowed if estop else False, estop.reason if estop else "no CAN bus",
+            t, estop.run_allowed if estop else False, estop.reason if estop else "no e-stop",
             age, measurements, link_errors, *flags))
         plan_age_s = t - self.nmpc.plan_start_s
-        if self.supervisor.state == S.RUNNING and plan_age_s > self.config.rates.max_plan_age_s:
+        max_age_s = self.settings.rates.max_plan_age_s
+        if self.supervisor.state == S.RUNNING and plan_age_s > max_age_s:
             self.supervisor.trigger_safe_stop(t, f"NMPC stalled: the plan is {plan_age_s:.3f} s "
-                                              f"old (max {self.config.rates.max_plan_age_s} s)")
+                                              f"old (max {max_age_s} s)")
         commands, steps = self._commands(t, measurements)
         sent = self.supervisor.filter_commands(t, commands, measurements)
         self._send(sent)
         self._record(t, measurements, sent, steps)
         if self.supervisor.state == S.RUNNING:
             self.wbc_stats.tick(start)
-            self.wbc_stats.busy_s.append(self.clock() - start)
+            self.wbc_stats.busy_s.append(self.clock.now() - start)
             for name, m in measurements.items():
                 self.heights[name].append(float(m.position_in_world_m[2]))
         return self._advance(t, measurements, link_errors, frame)
 
     def _read(self, t: float) -> tuple[dict[str, RobotMeasurement], dict[str, str]]:
-        """Every robot's measurement, its base velocity fused from legs and MoCap
-        (``core.estimation.base_velocity``); a lost link is reported, not raised."""
+        """Every robot's measurement, its base velocity fused from legs and MoCap where the
+        driver measures none; a lost link is reported, not raised."""
         measurements, errors = {}, {}
         for name, driver in self.links.drivers.items():
             try:
@@ -178,8 +206,9 @@ class DeployLoop:
             except LinkLostError as error:
                 errors[name] = str(error)
                 continue
-            measurements[name] = replace(measurement, linear_velocity_in_world_m_s=(
-                self.velocity[name].update(t, measurement)))
+            estimator = self.velocity.get(name)
+            measurements[name] = measurement if estimator is None else replace(
+                measurement, linear_velocity_in_world_m_s=estimator.update(t, measurement))
         return measurements, errors
 
     def _send(self, commands: dict[str, JointCommand]) -> None:
@@ -200,10 +229,12 @@ class DeployLoop:
                     for name, move in self.moves.items()}, None
         plan = self.nmpc.plan
         if state == S.RUNNING and plan is not None and len(measurements) == len(self.names):
+            steps = self.control.wbc_steps(t, plan, self.nmpc.plan_start_s,
+                                           [measurements[n] for n in self.names])
+            if self.hooks is not None:
+                self.hooks.wbc_stepped(steps)
             steps = [replace(step, command=self._saturate(name, step.command, measurements[name]))
-                     for name, step in zip(self.names, self.control.wbc_steps(
-                         t, plan, self.nmpc.plan_start_s,
-                         [measurements[n] for n in self.names]), strict=True)]
+                     for name, step in zip(self.names, steps, strict=True)]
             return {n: step.command for n, step in zip(self.names, steps, strict=True)}, steps
         return {}, None
 
@@ -217,7 +248,7 @@ class DeployLoop:
         past a limit is left alone: the supervisor's torque fault stops the team."""
         if measurement is None:
             return command
-        limit = self.limits[name].torque_nm * self.config.safety.torque_limit_fraction
+        limit = self.limits[name].torque_nm * self.settings.safety.torque_limit_fraction
         total = command.torque_for(measurement.position_rad, measurement.velocity_rad_s)
         clipped = np.clip(total, -limit, limit)
         if np.array_equal(clipped, total) or not np.all(
@@ -239,39 +270,54 @@ class DeployLoop:
                 self.recording.wbc_tick(t, name, measurement, command, step.output,
                                         step.stance, step.foot_targets_m)
             else:
-                log = self.recording.recorder.log
-                log(fmt.robot_topic(name, "state"), fmt.robot_state(name, measurement), t)
-                log(fmt.robot_topic(name, "command"), fmt.joint_command(t, name, command), t)
+                self.recording.robot_tick(t, name, measurement, command)
 
     def _moves_to(self, t: float, goal: dict[str, np.ndarray], duration_s: float,
                   measurements: dict[str, RobotMeasurement]) -> None:
-        posture = self.config.posture
+        posture = self.settings.posture
         self.moves = {name: PostureMove(
             measurements[name].position_rad if name in measurements else goal[name],
             goal[name], t, duration_s, posture.kp, posture.kd) for name in self.names}
 
     # --- transitions ---------------------------------------------------------------------
+    def _standing_transitions(self, t: float, measurements: dict[str, RobotMeasurement]) -> bool:
+        """The simulation's start (standing, straight to RUNNING) and end (at ``duration_s``
+        or a stop request, before the tick's work); True once the run is over."""
+        supervisor = self.supervisor
+        if supervisor.state == S.PREFLIGHT:
+            supervisor.start_standing(t)
+            self.control.reset([measurements[n] for n in self.names], start_s=t)
+            self.nmpc.start(t)
+        elif supervisor.state == S.RUNNING:
+            stop = self.stop()
+            if stop or t - self.since[S.RUNNING] >= self.duration_s - 1e-9:
+                self.stopped_early = stop
+                self.ended_by = "stop requested" if stop else f"ran {self.duration_s:g} s"
+                self.nmpc.flush(t)
+                supervisor.end_standing(t)
+                return True
+        return False
+
     def _advance(self, t: float, measurements: dict[str, RobotMeasurement],
                  link_errors: dict[str, str], frame: MocapFrame | None) -> bool:
-        supervisor, state, posture = self.supervisor, self.supervisor.state, self.config.posture
+        supervisor, state, posture = self.supervisor, self.supervisor.state, self.settings.posture
         elapsed = t - self.since.get(state, t)
         if state == S.PREFLIGHT:
-            self.report = evaluate(self.config, self.links, self.limits, measurements,
-                                   link_errors, self.sport_mode)
+            self.report = self.preflight(measurements, link_errors) if self.preflight else None
             if self.stop():
                 self.ended_by = "stop requested during pre-flight"
                 supervisor.finish(t)
-            elif self.report.ok:
+            elif self.report is not None and self.report.ok:
                 supervisor.begin_stand_up(t)
                 self._moves_to(t, self.standing, posture.stand_up_s, measurements)
-            elif elapsed > self.config.preflight.timeout_s:
+            elif elapsed > self.settings.preflight_timeout_s:
                 self.ended_by = "pre-flight failed"
                 supervisor.finish(t)
         elif state == S.STANDING_UP:
             if self.stop():
                 self._sit_down(t, measurements, "stop requested while standing up")
             elif elapsed >= posture.stand_up_s + posture.settle_s:
-                answer = self.confirm()
+                answer = self.confirm() if self.confirm is not None else True
                 if answer:
                     supervisor.arm(t)
                     self.control.reset([measurements[n] for n in self.names], start_s=t)
@@ -285,7 +331,7 @@ class DeployLoop:
                 supervisor.begin_run(t)
                 if frame is not None:
                     self.frames["start"] = frame
-        elif state == S.RUNNING:
+        elif state == S.RUNNING and self.sequence == "deploy":
             if self.stop() or elapsed >= self.duration_s:
                 if frame is not None:
                     self.frames["end"] = frame
@@ -305,4 +351,4 @@ class DeployLoop:
     def _sit_down(self, t: float, measurements: dict[str, RobotMeasurement], why: str) -> None:
         self.ended_by = why
         self.supervisor.begin_sit_down(t)
-        self._moves_to(t, self.sitting, self.config.posture.sit_down_s, measurements)
+        self._moves_to(t, self.sitting, self.settings.posture.sit_down_s, measurements)

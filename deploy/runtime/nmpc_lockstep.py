@@ -1,0 +1,59 @@
+"""The NMPC in simulated time: the same interface as ``deploy.runtime.nmpc_thread.NmpcThread``
+(``busy``, ``submit``, ``take``, ``close``) for the lockstep clock.
+
+``submit`` runs ``TeamController.update`` at once (simulated time stands still meanwhile); the
+result is handed over by ``take`` once the loop's clock has reached the submit time plus the
+modelled computation time: none by default (the plan takes effect on the tick it was decided),
+the update's measured wall time with ``model_delay``, or ``fixed_delay_s`` when set
+(deterministic). The first plan of a run is handed over at once (there is no plan to keep
+tracking meanwhile). While a result waits, ``busy`` is True: one NMPC at a time, as on robots.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Callable
+
+from deploy.runtime.controller import NmpcDecision, TeamController
+from deploy.runtime.nmpc_thread import NmpcResult
+
+__all__ = ["LockstepNmpc"]
+
+
+class LockstepNmpc:
+    """Synchronous NMPC updates whose results wait out a modelled computation time."""
+
+    def __init__(self, control: TeamController, clock: Callable[[], float],
+                 model_delay: bool = False, fixed_delay_s: float | None = None) -> None:
+        self.control, self.clock = control, clock
+        self.model_delay, self.fixed_delay_s = model_delay, fixed_delay_s
+        self._waiting: tuple[float, NmpcResult] | None = None  # (ready at [s], result)
+        self._first = True
+
+    @property
+    def busy(self) -> bool:
+        return self._waiting is not None
+
+    def submit(self, decision: NmpcDecision, update: int) -> None:
+        if self._waiting is not None:
+            raise RuntimeError("NMPC update submitted while one is running")
+        plan, error = None, ""
+        try:
+            plan = self.control.update(decision)
+        except Exception as exception:  # the loop's safety decides what a failure means
+            error = f"{type(exception).__name__}: {exception}"
+        took_s = 0.0
+        if self.model_delay and not self._first:
+            took_s = (self.fixed_delay_s if self.fixed_delay_s is not None
+                      else plan.update_time_s if plan is not None else 0.0)
+        self._first = False
+        self._waiting = (self.clock() + took_s, NmpcResult(decision, update, plan, took_s, error))
+
+    def take(self) -> NmpcResult | None:
+        """The waiting result once its computation time has passed on the clock."""
+        if self._waiting is None or self.clock() < self._waiting[0]:
+            return None
+        result, self._waiting = self._waiting[1], None
+        return result
+
+    def close(self) -> None:
+        self._waiting = None

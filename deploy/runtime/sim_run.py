@@ -1,0 +1,215 @@
+"""``porter sim``: one scenario in the in-process MuJoCo world, on the one control loop in
+lockstep (``deploy.runtime.loop``, ``deploy.runtime.clock.LockstepClock``).
+
+Deterministic: simulated time advances only when the loop steps it, so the same scenario and
+seed give the same trajectory whatever the machine's speed (timing metrics aside). Physics at
+1 kHz, the loop at 500 Hz, the NMPC at 60 Hz. The loop talks to the world only through
+``drivers.interfaces`` (the simulation's robot drivers, its MoCap at the NMPC rate, its coupling
+F/T sensors, a simulated e-stop); the safety supervisor runs as on robots, except that the team
+starts standing (PREFLIGHT -> RUNNING at once) and the run ends standing at ``duration_s``. A
+fault (a fall, a NaN, a torque beyond its limit, repeated solver failures) ends in SAFE_STOP
+and joint damping, as on robots. With ``controller.model_computation_delay`` a plan takes
+effect only after its measured (or ``computation_delay_s``) update time has passed in
+simulated time (``deploy.runtime.nmpc_lockstep``).
+
+Ground truth is read from the simulation for the metrics (``deploy.runtime.run_metrics``) and
+the log's ``/sim/ground_truth`` only, after every physics tick.
+"""
+
+from __future__ import annotations
+
+import time
+from collections.abc import Callable
+
+import numpy as np
+
+from core.locomotion.settings import WbcSettings
+from core.locomotion.whole_body_control import FloatingBaseState
+from core.model.conventions import PAYLOAD_NAME
+from core.model.rotations import euler_from_rotation, rotation_from_quaternion_wxyz
+from core.nmpc.mpc_plan import MpcPlan
+from core.nmpc.settings import MpcSettings
+from deploy.config.deploy_config import PostureConfig, RatesConfig
+from deploy.config.scenario import Scenario
+from deploy.recording.flight_recorder import FlightRecorder
+from deploy.recording.loop_recording import LoopRecording
+from deploy.runtime.clock import LockstepClock
+from deploy.runtime.codegen_cache import CompiledCodeCache
+from deploy.runtime.controller import NmpcDecision, TeamController, WbcStep
+from deploy.runtime.links import MocapTracker, TeamLinks
+from deploy.runtime.loop import ControlLoop, LoopSettings
+from deploy.runtime.nmpc_lockstep import LockstepNmpc
+from deploy.runtime.nmpc_schedule import NmpcSchedule
+from deploy.runtime.run_metrics import FALL_HEIGHT_FRACTION, MAX_TILT_RAD, RunMetrics
+from deploy.safety.supervisor import SupervisorSettings
+from drivers.interfaces import RobotDriver
+from drivers.mujoco.scene import PHYSICS_TIMESTEP_S, build_team_scene
+from drivers.mujoco.simulation import SimulatedEstop, TeamSimulation
+
+__all__ = ["WBC_DECIMATION", "SimRun", "summary_line"]
+
+WBC_DECIMATION = 2  # physics steps per loop tick: 500 Hz
+MOCAP_VELOCITY_WINDOW_S = 0.08
+
+Progress = Callable[[float, float, float], None]  # (sim time, duration, wall time) [s]
+
+
+class SimRun:
+    """One scenario in MuJoCo: build once with ``SimRun(scenario)``, then ``run()``."""
+
+    def __init__(self, scenario: Scenario, cache: CompiledCodeCache | None = None,
+                 base_settings: MpcSettings | None = None,
+                 wbc_settings: WbcSettings | None = None,
+                 supervisor_settings: SupervisorSettings | None = None) -> None:
+        self.scenario = scenario
+        tick_s = WBC_DECIMATION * PHYSICS_TIMESTEP_S
+        self.control = TeamController(scenario, cache, base_settings, wbc_settings, tick_s=tick_s)
+        self.wbc_settings = self.control.wbc_settings
+        self.settings = self.control.settings
+        self.obstacles = self.control.obstacles
+        scene = build_team_scene(
+            scenario.team_settings(), payload_true_mass_kg=scenario.true_payload_mass_kg,
+            obstacles=[(*o.position_m, o.radius_m, o.height_m) for o in scenario.obstacles],
+            timestep_s=PHYSICS_TIMESTEP_S, payload_height_m=scenario.reference.payload_height_m)
+        noise = scenario.disturbances
+        self.simulation = TeamSimulation(scene, seed=scenario.seed,
+                                         mocap_position_noise_m=noise.mocap_position_noise_m,
+                                         mocap_angle_noise_rad=noise.mocap_angle_noise_rad)
+        sim = self.simulation
+        names = self.control.robot_names
+        self.estop = SimulatedEstop()
+        now = lambda: sim.time_s  # noqa: E731
+        # The MoCap delivers frames at the NMPC rate: each frame draws its noise once, on the
+        # NMPC's own grid instants.
+        mocap = sim.mocap(rate_hz=1.0 / self.settings.sample_period_s)
+        tracker = MocapTracker(mocap, {name: name for name in [*names, PAYLOAD_NAME]},
+                               MOCAP_VELOCITY_WINDOW_S, now)
+        drivers: dict[str, RobotDriver] = {name: sim.robot_driver(name) for name in names}
+        self.links = TeamLinks(drivers, None, tracker, self.estop, sim.wrench_sensors())
+        self.metrics = RunMetrics(scenario.name, self.control.reference.goal_m(),
+                                  scenario.goal_tolerance_m, self._pair_names())
+        self.loop_settings = LoopSettings(
+            RatesConfig(wbc_hz=1.0 / tick_s, nmpc_hz=1.0 / self.settings.sample_period_s),
+            supervisor_settings or SupervisorSettings(), PostureConfig())
+        self.recording: LoopRecording | None = None
+        self._pushes = sorted(scenario.disturbances.pushes, key=lambda p: p.time_s)
+        self._tick_wall_s: float | None = None
+        self.loop: ControlLoop | None = None
+
+    def attach_recorder(self, recorder: FlightRecorder) -> None:
+        """Record the run to ``recorder`` (what and when: ``deploy.recording.loop_recording``)."""
+        self.recording = LoopRecording(
+            recorder, self.control.robot_names, self.obstacles,
+            [o.height_m for o in self.scenario.obstacles],
+            self.settings.safety.safety_distance_m, self.settings.sample_period_s,
+            np.asarray(self.scenario.payload.size_m))
+
+    def _pair_names(self) -> list[str]:
+        bodies = [PAYLOAD_NAME, *self.control.robot_names]
+        return [f"{body}|obstacle_{j}" for body in bodies for j in range(len(self.obstacles))]
+
+    def close(self) -> None:
+        self.control.close()
+
+    # --- the run -------------------------------------------------------------------------
+    def run(self, progress: Progress | None = None, stop: Callable[[], bool] | None = None,
+            verbose: bool = True) -> dict:
+        """Simulate the scenario to its end, a safe stop, or until ``stop()`` is true (checked
+        every tick); returns the summary dict."""
+        sim, controller = self.simulation, self.scenario.controller
+        runner = LockstepNmpc(self.control, lambda: sim.time_s, controller.model_computation_delay,
+                              controller.computation_delay_s)
+        nmpc = NmpcSchedule(self.control, runner, 1.0 / self.settings.sample_period_s,
+                            lambda: sim.time_s, self.recording, self.links.force_torque,
+                            has_deadline=controller.model_computation_delay, hooks=self,
+                            truth=sim.payload_pose)
+        start = time.perf_counter()
+
+        def after_step(t: float) -> None:
+            self._record_ground_truth(t)
+            ticks = int(round(t / (WBC_DECIMATION * PHYSICS_TIMESTEP_S)))
+            if progress is not None and ticks % 50 == 0:
+                progress(t, self.scenario.duration_s, time.perf_counter() - start)
+
+        clock = LockstepClock(sim, WBC_DECIMATION, after_step)
+        loop = self.loop = ControlLoop(
+            self.control, self.links, self.loop_settings, clock, nmpc, self.recording,
+            stop or (lambda: False), self.scenario.duration_s, sequence="standing", hooks=self,
+            verbose=verbose)
+        loop.run(f"start: scenario {self.scenario.name}, {controller.mode} NMPC, "
+                 f"seed {self.scenario.seed}")
+        self.metrics.wall_s = time.perf_counter() - start
+        self.metrics.plans_applied = nmpc.plans_applied
+        self.metrics.stopped_early = loop.stopped_early
+        summary = self.metrics.summary()
+        summary["safety"] = loop.outcome()
+        if self.recording is not None:
+            if loop.stopped_early:
+                self.recording.event(sim.time_s, "stop requested: run ended early", level=1)
+            self.recording.event(sim.time_s, f"end: reached goal {summary['reached_goal']}, "
+                                 f"falls {summary['falls']}")
+        return summary
+
+    # --- hooks of the loop and the NMPC schedule ------------------------------------------
+    def before_tick(self, t: float) -> None:
+        now = time.perf_counter()
+        if self._tick_wall_s is not None:
+            self.metrics.loop_tick_ms.append(1e3 * (now - self._tick_wall_s))
+        self._tick_wall_s = now
+        while self._pushes and self._pushes[0].time_s <= t + 1e-9:
+            push = self._pushes.pop(0)
+            self.simulation.apply_push(push.target, np.asarray(push.force_n), push.duration_s)
+            if self.recording is not None:
+                self.recording.event(t, f"push on {push.target}: {list(push.force_n)} N for "
+                                     f"{push.duration_s} s")
+
+    def wbc_stepped(self, steps: list[WbcStep]) -> None:
+        for step in steps:
+            self.metrics.record_wbc(step.output.solve_time_s, step.output.success)
+
+    def decided(self, decision: NmpcDecision) -> None:
+        true_position, true_quaternion = self.simulation.payload_pose()
+        self.metrics.record_estimate(decision.payload_estimate, true_position, euler_from_rotation(
+            rotation_from_quaternion_wxyz(true_quaternion)))
+
+    def planned(self, plan: MpcPlan) -> None:
+        self.metrics.record_plan(plan)
+
+    def wrench_compared(self, planned_force_n: np.ndarray, measured_force_n: np.ndarray) -> None:
+        self.metrics.record_wrench(planned_force_n, measured_force_n)
+
+    def _record_ground_truth(self, t: float) -> None:
+        """Metrics (and the log's ground truth) from the simulator's state at ``t``."""
+        sim = self.simulation
+        position, quaternion = sim.payload_pose()
+        yaw = float(euler_from_rotation(rotation_from_quaternion_wxyz(quaternion))[2])
+        desired = self.control.reference.payload_state(self.control.reference_time(t))
+        bodies = [position[0:2]]
+        for robot in self.control.robots:
+            base_position, base_quaternion = sim.base_pose(robot.name)
+            state = robot.wbc.srb_state(FloatingBaseState(
+                base_position, base_quaternion, np.zeros(3), np.zeros(3), np.zeros(12),
+                np.zeros(12)))
+            bodies.append(state[0:2])
+            nominal = robot.legs.robot.nominal_height_m
+            if state[2] < FALL_HEIGHT_FRACTION * nominal or max(abs(state[6]), abs(state[7])) \
+                    > MAX_TILT_RAD:
+                self.metrics.record_fall(robot.name)
+        h = np.array([[np.linalg.norm(body - o.row(t, 0.0)[0:2]) - self.settings.safety
+                       .safety_distance_m - o.radius_m for o in self.obstacles]
+                      for body in bodies])
+        coupling = np.array([sim.coupling_error_m(r.name) for r in self.control.robots])
+        self.metrics.record_ground_truth(t, position[0:2], yaw, desired[0:2], desired[8], h,
+                                         coupling)
+        if self.recording is not None and self.recording.ground_truth_due(t):
+            poses = {PAYLOAD_NAME: (position, quaternion)}
+            poses.update({r.name: sim.base_pose(r.name) for r in self.control.robots})
+            self.recording.ground_truth(t, poses, yaw, desired, h, coupling)
+
+
+def summary_line(time_s: float, duration_s: float, wall_s: float) -> str:
+    """A one-line progress bar: simulated time and real-time factor."""
+    width = 30
+    done = int(width * min(time_s / duration_s, 1.0)) if duration_s > 0 else width
+    factor = time_s / wall_s if wall_s > 0 else float("inf")
+    return f"[{'#' * done}{'.' * (width - done)}] {time_s:5.1f}/{duration_s:.1f} s  RTF {factor:.2f}"
