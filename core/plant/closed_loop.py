@@ -14,9 +14,10 @@ import numpy as np
 from core.locomotion.gait import FootholdPlanner, TrotGait
 from core.model.obstacles import Obstacle
 from core.model.team import TeamModel
+from core.nmpc.inputs_builder import build_mpc_inputs
 from core.nmpc.mpc_inputs import MpcInputs
 from core.nmpc.mpc_plan import MpcPlan
-from core.nmpc.reference import WaypointReference, horizon_references, robot_state_from_payload
+from core.nmpc.reference import WaypointReference, robot_state_from_payload
 from core.nmpc.settings import MpcSettings
 from core.plant.srb_plant import SrbPlant
 
@@ -60,7 +61,6 @@ def run_closed_loop(
     gait = gait or TrotGait()
     ts = settings.sample_period_s
     n = settings.horizon_steps
-    d_safe = settings.safety.safety_distance_m
     plant = SrbPlant(plant_team, ts / plant_substeps, settings.gravity_m_s2)
     payload = reference.payload_state(0.0)
     payload[3:6] = 0.0
@@ -72,21 +72,20 @@ def run_closed_loop(
     result = ClosedLoopResult()
     for step in range(int(round(duration_s / ts))):
         t = step * ts
-        robot_refs, payload_ref = horizon_references(team, reference, t, n, ts)
-        feet, contacts = [], []
-        for i, planner in enumerate(planners):
-            planner.update(t, robots[i], robot_refs[i][0])
-            f, c = planner.horizon(t, n, ts, robots[i], robot_refs[i])
-            feet.append(f)
-            contacts.append(c)
-        obstacle_rows = np.array([o.row(t, d_safe) for o in obstacles]).reshape(-1, 5)
-        inputs = MpcInputs(robots.copy(), payload.copy(), robot_refs, payload_ref,
-                           np.array(feet), np.array(contacts), obstacle_rows)
+
+        def foot_horizon(i: int, state: np.ndarray, refs: np.ndarray, t: float = t
+                         ) -> tuple[np.ndarray, np.ndarray]:
+            planners[i].update(t, state, refs[0])
+            return planners[i].horizon(t, n, ts, state, refs)
+
+        inputs = build_mpc_inputs(team, reference, settings, robots.copy(), payload.copy(), t,
+                                  foot_horizon, obstacles, t)
+        feet = inputs.feet_positions
         plan = controller.update(inputs)
         _record(result, t, inputs, plan, reference)
         result.coupling_error_m.append(
             float(np.max(np.abs(plant.coupling_error(robots, payload)[:, 0:3]))))
-        robots, payload, _ = plant.step(robots, payload, plan.grf, np.array(feet)[:, 0],
+        robots, payload, _ = plant.step(robots, payload, plan.grf, feet[:, 0],
                                         plant_substeps)
         if not np.all(np.isfinite(payload)):
             break

@@ -31,9 +31,9 @@ from core.nmpc.admm_executor import LocalSolverSpec
 from core.nmpc.admm_mpc import DistributedMpc
 from core.nmpc.centralized_mpc import CentralizedMpc
 from core.nmpc.delay_compensation import predict_states
+from core.nmpc.inputs_builder import build_mpc_inputs
 from core.nmpc.mpc_inputs import MpcInputs
 from core.nmpc.mpc_plan import MpcPlan
-from core.nmpc.reference import horizon_references
 from core.nmpc.settings import MpcSettings
 from deploy.config.scenario import Scenario
 from deploy.runtime.codegen_cache import CompiledCodeCache
@@ -187,29 +187,19 @@ class TeamController:
         else:
             delay_s = 0.0
         t = t + delay_s
-        robot_refs, payload_ref = horizon_references(self.team, self.reference,
-                                                     self.reference_time(t), n, ts)
-        if t - self.start_s < SETTLE_S:  # hold the start pose while settling
-            robot_refs[:, :, 3:6] = 0.0
-            payload_ref[:, 3:6] = 0.0
-        feet, contacts = [], []
         gait_time = self.gait_time(t)
-        for i, robot in enumerate(self.robots):
-            if gait_time is None:
-                feet.append(np.repeat(robot.legs.planner.feet_in_world_m[None], n, axis=0))
-                contacts.append(np.ones((n, 4)))
-            else:
-                f, c = robot.legs.planner.horizon(gait_time, n, ts, robot_states[i],
-                                                  robot_refs[i])
-                feet.append(f)
-                contacts.append(c)
-        d_safe = settings.safety.safety_distance_m
-        obstacle_time = t - self.start_s
-        obstacle_rows = np.array([o.row(obstacle_time, d_safe)
-                                  for o in (self.obstacles if obstacles is None else obstacles)]
-                                 ).reshape(-1, 5)
-        inputs = MpcInputs(robot_states, payload, robot_refs, payload_ref, np.array(feet),
-                           np.array(contacts), obstacle_rows)
+
+        def foot_horizon(i: int, state: np.ndarray, refs: np.ndarray
+                         ) -> tuple[np.ndarray, np.ndarray]:
+            planner = self.robots[i].legs.planner
+            if gait_time is None:  # settling: every foot stays down where it is
+                return np.repeat(planner.feet_in_world_m[None], n, axis=0), np.ones((n, 4))
+            return planner.horizon(gait_time, n, ts, state, refs)
+
+        inputs = build_mpc_inputs(
+            self.team, self.reference, settings, robot_states, payload, self.reference_time(t),
+            foot_horizon, self.obstacles if obstacles is None else obstacles, t - self.start_s,
+            hold_pose=t - self.start_s < SETTLE_S)
         return NmpcDecision(t, inputs, frame, self.payload_estimate)
 
     def compensation_s(self, recent_delays_s: list[float]) -> float:

@@ -1,0 +1,138 @@
+"""The one control loop on both clocks, against the in-process MuJoCo drivers: the standing
+sequence of ``porter sim`` (lockstep) with its safe stop, and the deploy sequence (paced, on an
+injected clock whose sleep steps the simulation)."""
+
+from __future__ import annotations
+
+from dataclasses import replace
+
+import numpy as np
+import pytest
+
+from deploy.config.deploy_config import PostureConfig, RatesConfig
+from deploy.config.scenario import Scenario, load_scenario
+from deploy.runtime.clock import PacedClock
+from deploy.runtime.codegen_cache import CompiledCodeCache
+from deploy.runtime.loop import ControlLoop, LoopSettings
+from deploy.runtime.nmpc_lockstep import LockstepNmpc
+from deploy.runtime.nmpc_schedule import NmpcSchedule
+from deploy.runtime.sim_run import SimRun
+from deploy.safety.preflight import PreflightCheck, PreflightReport
+from deploy.safety.supervisor import SupervisorSettings
+from drivers.interfaces import JointCommand, RobotDriver, RobotMeasurement
+
+
+def _scenario(duration_s: float) -> Scenario:
+    scenario = load_scenario("two_go2")
+    return scenario.model_copy(update={"duration_s": duration_s, "controller": (
+        scenario.controller.model_copy(update={"executor": "serial"}))})
+
+
+class Tapped:
+    """A ``RobotDriver`` that records what is sent and can turn its joint angles to NaN."""
+
+    def __init__(self, driver: RobotDriver, nan_after_s: float | None = None) -> None:
+        self.driver, self.nan_after_s = driver, nan_after_s
+        self.sent: list[tuple[float, JointCommand]] = []
+        self.name = driver.name
+        self._time_s = 0.0
+
+    def read(self) -> RobotMeasurement:
+        measurement = self.driver.read()
+        self._time_s = measurement.time_s
+        if self.nan_after_s is not None and measurement.time_s >= self.nan_after_s:
+            q = measurement.position_rad.copy()
+            q[4] = np.nan
+            return replace(measurement, position_rad=q)
+        return measurement
+
+    def send(self, command: JointCommand) -> None:
+        self.sent.append((self._time_s, command))
+        self.driver.send(command)
+
+    def send_damping(self, kd: float) -> None:
+        self.driver.send_damping(kd)
+
+    def close(self) -> None:
+        self.driver.close()
+
+
+def test_lockstep_starts_standing_and_ends_standing_at_the_duration() -> None:
+    run = SimRun(_scenario(0.2), CompiledCodeCache())
+    try:
+        summary = run.run(verbose=False)
+    finally:
+        run.close()
+    safety = summary["safety"]
+    assert safety["transitions"] == ["0.000 s PREFLIGHT -> RUNNING: requested: start_standing",
+                                     "0.200 s RUNNING -> DONE: requested: end_standing"]
+    assert safety["safe_stop"] is None and safety["result"] == "ran 0.2 s"
+    assert summary["nmpc_updates"] == 12 == summary["nmpc_plans_applied"]
+    assert summary["duration_s"] == pytest.approx(0.2)
+
+
+def test_lockstep_a_nan_ends_in_a_safe_stop_with_only_damping_reaching_the_motors() -> None:
+    run = SimRun(_scenario(1.0), CompiledCodeCache())
+    tapped = Tapped(run.links.drivers["go2_0"], nan_after_s=0.2)
+    run.links.drivers["go2_0"] = tapped
+    try:
+        summary = run.run(verbose=False)
+    finally:
+        run.close()
+    safety = summary["safety"]
+    assert safety["final_state"] == "DONE"
+    assert "non-finite measurement: go2_0 position_rad[4]" in safety["safe_stop"]
+    trip_s = float(safety["transitions"][1].split(" s ")[0])
+    assert 0.2 <= trip_s < 0.21
+    after = [command for t, command in tapped.sent if t >= trip_s]
+    assert after, "the safe stop commands damping"
+    damping = run.loop_settings.safety.damping_kd
+    for command in after:
+        assert not command.kp.any() and not command.torque_nm.any()
+        assert np.all(command.kd == damping)
+    # the run ended after the damping time, not at the scenario's end
+    posture = run.loop_settings.posture
+    assert summary["duration_s"] == pytest.approx(trip_s + 2 * posture.final_damping_s, abs=0.01)
+
+
+def test_paced_clock_runs_the_deploy_sequence_on_the_simulation() -> None:
+    run = SimRun(_scenario(0.2), CompiledCodeCache())
+    sim = run.simulation
+    clock_s = [0.0]
+
+    def sleep(seconds: float) -> None:  # the paced clock's sleep lets the world run
+        steps = int(round(seconds / sim.timestep_s))
+        sim.step(steps)
+        clock_s[0] += steps * sim.timestep_s
+
+    def clock() -> float:
+        return clock_s[0]
+
+    control = run.control
+    nmpc = NmpcSchedule(control, LockstepNmpc(control, clock, True, 0.02), 60.0, clock, None,
+                        run.links.force_torque, has_deadline=True)
+    settings = LoopSettings(RatesConfig(), SupervisorSettings(), PostureConfig(
+        stand_up_s=0.3, settle_s=0.1, sit_down_s=0.3, final_damping_s=0.05))
+    ok = PreflightReport([PreflightCheck("simulation", True, "in process")])
+    tapped = Tapped(run.links.drivers["go2_1"])
+    run.links.drivers["go2_1"] = tapped
+    loop = ControlLoop(control, run.links, settings, PacedClock(0.002, clock, sleep), nmpc, None,
+                       lambda: False, 0.2, "deploy", confirm=lambda: True,
+                       preflight=lambda measurements, errors: ok, verbose=False)
+    try:
+        loop.run("start: test")
+    finally:
+        run.close()
+    outcome = loop.outcome()
+    steps = [t.split(": ")[0].split(" s ")[1] for t in outcome["transitions"]]
+    assert steps == ["PREFLIGHT -> STANDING_UP", "STANDING_UP -> ARMED", "ARMED -> RUNNING",
+                     "RUNNING -> SITTING_DOWN", "SITTING_DOWN -> DONE"], outcome["transitions"]
+    assert outcome["safe_stop"] is None and outcome["result"] == "ran 0.2 s"
+    # plans every other 60 Hz instant (20 ms each), each planned 20-22 ms ahead
+    assert 5 <= outcome["nmpc_updates"] <= 8 and outcome["nmpc_deadline_misses"] >= 5
+    # (the tick a transition happens in still sends the old state's command)
+    running = [c for t, c in tapped.sent if loop.since[loop.supervisor.state.RUNNING] < t
+               < loop.since[loop.supervisor.state.SITTING_DOWN]]
+    assert running and all(not c.kp.any() and c.torque_nm.any() for c in running)  # WBC
+    sitting = [c for t, c in tapped.sent if t > loop.since[loop.supervisor.state.SITTING_DOWN]]
+    assert sitting and all(c.kp.any() for c in sitting[:100])  # the posture PD
