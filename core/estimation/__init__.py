@@ -6,13 +6,7 @@ else.
 
 from __future__ import annotations
 
-from typing import TYPE_CHECKING
-
 from core.lazy_exports import lazy_exports
-
-if TYPE_CHECKING:
-    from core.estimation.base_velocity import BaseVelocityEstimator, LegMeasurement
-    from core.estimation.payload_estimator import PayloadEstimator
 
 _SOURCES = {
     "core.estimation.base_velocity": ["BaseVelocityEstimator", "LegMeasurement"],

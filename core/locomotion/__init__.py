@@ -6,21 +6,7 @@ else.
 
 from __future__ import annotations
 
-from typing import TYPE_CHECKING
-
 from core.lazy_exports import lazy_exports
-
-if TYPE_CHECKING:
-    from core.locomotion.gait import FootholdPlanner, TrotGait
-    from core.locomotion.plan_tracking import LegCoordinator, plan_set_point, wbc_target
-    from core.locomotion.settings import WbcSettings
-    from core.locomotion.swing_trajectory import SwingPoint, swing_point
-    from core.locomotion.whole_body_control import (
-        FloatingBaseState,
-        WbcOutput,
-        WbcTarget,
-        WholeBodyController,
-    )
 
 _SOURCES = {
     "core.locomotion.gait": ["TrotGait", "FootholdPlanner"],

@@ -6,51 +6,7 @@ else.
 
 from __future__ import annotations
 
-from typing import TYPE_CHECKING
-
 from core.lazy_exports import lazy_exports
-
-if TYPE_CHECKING:
-    from core.model.conventions import (
-        FOOT_COUNT,
-        JOINT_COUNT,
-        LEG_JOINT_KINDS,
-        LEG_JOINT_NAMES,
-        LEG_NAMES,
-        PAYLOAD_NAME,
-    )
-    from core.model.coupling import (
-        CouplingKinematics,
-        acceleration_level_constraint,
-        coupling_kinematics,
-        coupling_point_in_world,
-        yaw_torque,
-    )
-    from core.model.obstacles import Obstacle
-    from core.model.robot_parameters import leg_joint_indices, srb_parameters_from_model
-    from core.model.rotations import (
-        euler_from_rotation,
-        rotation_from_euler,
-        rotation_from_quaternion_wxyz,
-        yaw_rotation,
-    )
-    from core.model.srb_model import (
-        BodyAcceleration,
-        SrbParameters,
-        euler_rates_from_angular_velocity,
-        inertia_entries,
-        inertia_matrix,
-        payload_acceleration,
-        payload_parameters,
-        rigid_body_acceleration,
-        robot_acceleration,
-        rotation_body_to_world,
-        semi_implicit_euler_step,
-        split_state,
-    )
-    from core.model.strict_model import StrictModel
-    from core.model.team import TeamModel
-    from core.model.team_settings import ROBOT_TYPES, AgentSettings, PayloadSettings, TeamSettings
 
 _SOURCES = {
     "core.model.conventions": ["FOOT_COUNT", "JOINT_COUNT", "LEG_JOINT_KINDS", "LEG_JOINT_NAMES",

@@ -6,61 +6,7 @@ else.
 
 from __future__ import annotations
 
-from typing import TYPE_CHECKING
-
 from core.lazy_exports import lazy_exports
-
-if TYPE_CHECKING:
-    from core.nmpc.admm_executor import (
-        LocalSolveExecutor,
-        LocalSolveRequest,
-        LocalSolverSpec,
-        SerialExecutor,
-        solve_request,
-    )
-    from core.nmpc.admm_mpc import DistributedMpc
-    from core.nmpc.cbf import (
-        first_order_condition,
-        hocbf_condition,
-        obstacle_position,
-        safety_function,
-        stage_safety_values,
-        stagewise_first_order,
-        stagewise_hocbf,
-    )
-    from core.nmpc.centralized_mpc import CentralizedMpc
-    from core.nmpc.delay_compensation import interpolate_trajectory, predict_states
-    from core.nmpc.layout import BlockLayout, LayoutError
-    from core.nmpc.mpc_inputs import InvalidMpcInputError, MpcInputs
-    from core.nmpc.mpc_plan import AdmmIteration, MpcPlan, decode_plan
-    from core.nmpc.nlp_solver import NlpCompiler, NlpSolution, NlpSolver, SolveStats, problem_key
-    from core.nmpc.obstacle_selection import (
-        ObstacleSelection,
-        predicted_min_safety_values,
-        select_obstacles,
-    )
-    from core.nmpc.reference import WaypointReference, horizon_references, robot_state_from_payload
-    from core.nmpc.settings import (
-        AdmmSettings,
-        ContactSettings,
-        CostSettings,
-        CouplingSettings,
-        MpcSettings,
-        SafetySettings,
-        SolverSettings,
-        SrbWeights,
-    )
-    from core.nmpc.stagewise_nlp import NlpProblem, StageStructure, StagewiseBuilder
-    from core.nmpc.transport_problem import TransportProblem, build_transport_problem, consensus_weights
-    from core.nmpc.warm_start import (
-        ControllerMemory,
-        conform_forces,
-        initial_guess,
-        nominal_foot_forces,
-        shift_blocks,
-        shift_solution,
-        shifted_multipliers,
-    )
 
 _SOURCES = {
     "core.nmpc.admm_executor": ["LocalSolveRequest", "LocalSolverSpec", "solve_request",
@@ -70,6 +16,7 @@ _SOURCES = {
         "stage_safety_values", "stagewise_hocbf", "first_order_condition", "stagewise_first_order"],
     "core.nmpc.centralized_mpc": ["CentralizedMpc"],
     "core.nmpc.delay_compensation": ["interpolate_trajectory", "predict_states"],
+    "core.nmpc.inputs_builder": ["FootHorizon", "build_mpc_inputs"],
     "core.nmpc.layout": ["LayoutError", "BlockLayout"],
     "core.nmpc.mpc_inputs": ["InvalidMpcInputError", "MpcInputs"],
     "core.nmpc.mpc_plan": ["AdmmIteration", "MpcPlan", "decode_plan"],
@@ -86,16 +33,17 @@ _SOURCES = {
         "nominal_foot_forces", "conform_forces", "initial_guess", "ControllerMemory"],
 }
 __all__ = ["AdmmIteration", "AdmmSettings", "BlockLayout", "CentralizedMpc", "ContactSettings",
-           "ControllerMemory", "CostSettings", "CouplingSettings", "DistributedMpc",
+           "ControllerMemory", "CostSettings", "CouplingSettings", "DistributedMpc", "FootHorizon",
            "InvalidMpcInputError", "LayoutError", "LocalSolveExecutor", "LocalSolveRequest",
            "LocalSolverSpec", "MpcInputs", "MpcPlan", "MpcSettings", "NlpCompiler", "NlpProblem",
            "NlpSolution", "NlpSolver", "ObstacleSelection", "SafetySettings", "SerialExecutor",
            "SolveStats", "SolverSettings", "SrbWeights", "StageStructure", "StagewiseBuilder",
-           "TransportProblem", "WaypointReference", "build_transport_problem", "conform_forces",
-           "consensus_weights", "decode_plan", "first_order_condition", "hocbf_condition",
-           "horizon_references", "initial_guess", "interpolate_trajectory", "nominal_foot_forces",
-           "obstacle_position", "predict_states", "predicted_min_safety_values", "problem_key",
-           "robot_state_from_payload", "safety_function", "select_obstacles", "shift_blocks",
-           "shift_solution", "shifted_multipliers", "solve_request", "stage_safety_values",
-           "stagewise_first_order", "stagewise_hocbf"]
+           "TransportProblem", "WaypointReference", "build_mpc_inputs", "build_transport_problem",
+           "conform_forces", "consensus_weights", "decode_plan", "first_order_condition",
+           "hocbf_condition", "horizon_references", "initial_guess", "interpolate_trajectory",
+           "nominal_foot_forces", "obstacle_position", "predict_states",
+           "predicted_min_safety_values", "problem_key", "robot_state_from_payload",
+           "safety_function", "select_obstacles", "shift_blocks", "shift_solution",
+           "shifted_multipliers", "solve_request", "stage_safety_values", "stagewise_first_order",
+           "stagewise_hocbf"]
 __getattr__ = lazy_exports(__name__, _SOURCES)

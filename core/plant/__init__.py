@@ -6,14 +6,7 @@ else.
 
 from __future__ import annotations
 
-from typing import TYPE_CHECKING
-
 from core.lazy_exports import lazy_exports
-
-if TYPE_CHECKING:
-    from core.plant.closed_loop import ClosedLoopResult, Controller, run_closed_loop
-    from core.plant.srb_plant import SrbPlant
-    from core.plant.standard_scenarios import StandardScenario, ring_team_settings, standard_scenario
 
 _SOURCES = {
     "core.plant.closed_loop": ["Controller", "ClosedLoopResult", "run_closed_loop"],

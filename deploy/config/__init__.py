@@ -6,39 +6,7 @@ else.
 
 from __future__ import annotations
 
-from typing import TYPE_CHECKING
-
 from core.lazy_exports import lazy_exports
-
-if TYPE_CHECKING:
-    from deploy.config.deploy_config import (
-        A1Link,
-        CanConfig,
-        DeployConfig,
-        Go2Link,
-        MocapConfig,
-        PostureConfig,
-        PreflightConfig,
-        RatesConfig,
-        SimConfig,
-        SimFault,
-        config_path,
-        load_deploy_config,
-    )
-    from deploy.config.files import ConfigError, load_settings, validate_settings
-    from deploy.config.scenario import (
-        ControllerSpec,
-        DisturbanceSettings,
-        GaitSpec,
-        ObstacleSpec,
-        PayloadSpec,
-        PushSpec,
-        ReferenceSpec,
-        Scenario,
-        load_scenario,
-        scenario_path,
-        shipped_scenarios,
-    )
 
 _SOURCES = {
     "deploy.config.deploy_config": ["Go2Link", "A1Link", "MocapConfig", "CanConfig",

@@ -6,49 +6,7 @@ else.
 
 from __future__ import annotations
 
-from typing import TYPE_CHECKING
-
 from core.lazy_exports import lazy_exports
-
-if TYPE_CHECKING:
-    from deploy.recording.expectations import check_expectations, draft_expectations, expectations_path
-    from deploy.recording.flight_recorder import FlightRecorder, RecorderSettings
-    from deploy.recording.log_format import (
-        array,
-        as_list,
-        frame_transforms,
-        from_array,
-        joint_command,
-        mocap_messages,
-        mocap_topic,
-        obstacle_scene,
-        payload_box,
-        pose_in_frame,
-        robot_state,
-        robot_topic,
-        timestamp,
-        to_nanoseconds,
-    )
-    from deploy.recording.log_reader import DecodedMessage, LogError, LogFile, Recovery, recover
-    from deploy.recording.loop_recording import LoopRecording, update_message, warm_start_message
-    from deploy.recording.regression import (
-        LogRegression,
-        compare,
-        controller_from_log,
-        format_report,
-        inputs_from_message,
-        memory_from_message,
-        refresh_expectations,
-        regress_log,
-        run_regress,
-    )
-    from deploy.recording.run_record import (
-        default_log_path,
-        git_revision,
-        open_run_recorder,
-        run_attachments,
-        run_metadata,
-    )
 
 _SOURCES = {
     "deploy.recording.expectations": ["expectations_path", "check_expectations",

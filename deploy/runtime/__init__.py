@@ -6,35 +6,7 @@ else.
 
 from __future__ import annotations
 
-from typing import TYPE_CHECKING
-
 from core.lazy_exports import lazy_exports
-
-if TYPE_CHECKING:
-    from deploy.runtime.clock import LockstepClock, LoopClock, PacedClock
-    from deploy.runtime.codegen_cache import (
-        CompilationError,
-        CompiledCodeCache,
-        default_cache_directory,
-    )
-    from deploy.runtime.controller import (
-        NmpcDecision,
-        RobotControl,
-        TeamController,
-        WbcStep,
-        measurement_state,
-        mocap_state,
-    )
-    from deploy.runtime.links import MocapTracker, TeamLinks, finite_or_none, open_links
-    from deploy.runtime.loop import SATURATION_MARGIN, ControlLoop, LoopHooks, LoopSettings
-    from deploy.runtime.nmpc_lockstep import LockstepNmpc
-    from deploy.runtime.nmpc_schedule import Flags, NmpcHooks, NmpcRunner, NmpcSchedule
-    from deploy.runtime.nmpc_thread import NmpcResult, NmpcThread
-    from deploy.runtime.process_executor import ProcessExecutor
-    from deploy.runtime.run_metrics import RunMetrics
-    from deploy.runtime.sim_run import WBC_DECIMATION, SimRun, summary_line
-    from deploy.runtime.stop_request import StopRequest
-    from deploy.runtime.timing import Pacer, PeriodStats
 
 _SOURCES = {
     "deploy.runtime.clock": ["LockstepClock", "LoopClock", "PacedClock"],

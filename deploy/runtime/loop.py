@@ -43,16 +43,10 @@ from deploy.runtime.controller import TeamController, WbcStep
 from deploy.runtime.links import TeamLinks
 from deploy.runtime.nmpc_schedule import NmpcSchedule
 from deploy.runtime.timing import PeriodStats
+from deploy.safety.checks import SupervisorSettings, robot_limits
 from deploy.safety.posture import PostureMove, sitting_posture, standing_posture
 from deploy.safety.preflight import PreflightReport
-from deploy.safety.supervisor import (
-    SafetyInputs,
-    SafetyState,
-    SafetySupervisor,
-    SupervisorSettings,
-    Transition,
-    robot_limits,
-)
+from deploy.safety.supervisor import SafetyInputs, SafetyState, SafetySupervisor, Transition
 from drivers.interfaces import JointCommand, MocapFrame, RobotMeasurement
 from drivers.link_errors import DriverError, LinkLostError
 

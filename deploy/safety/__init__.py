@@ -6,35 +6,7 @@ else.
 
 from __future__ import annotations
 
-from typing import TYPE_CHECKING
-
 from core.lazy_exports import lazy_exports
-
-if TYPE_CHECKING:
-    from deploy.safety.checks import (
-        DeadlineOverrunWindow,
-        RobotLimits,
-        SolverFailureCounter,
-        SupervisorSettings,
-        base_height_fault,
-        joint_position_fault,
-        joint_velocity_fault,
-        mocap_fault,
-        non_finite_fault,
-        orientation_fault,
-        robot_limits,
-        tilt_rad,
-        torque_fault,
-    )
-    from deploy.safety.posture import PostureMove, sitting_posture, smoothstep, standing_posture
-    from deploy.safety.preflight import PreflightCheck, PreflightReport, evaluate
-    from deploy.safety.supervisor import (
-        SafetyError,
-        SafetyInputs,
-        SafetyState,
-        SafetySupervisor,
-        Transition,
-    )
 
 _SOURCES = {
     "deploy.safety.checks": ["SupervisorSettings", "RobotLimits", "robot_limits",

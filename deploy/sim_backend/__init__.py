@@ -6,21 +6,7 @@ else.
 
 from __future__ import annotations
 
-from typing import TYPE_CHECKING
-
 from core.lazy_exports import lazy_exports
-
-if TYPE_CHECKING:
-    from deploy.sim_backend.backend import SimBackend, free_udp_port, loopback_config
-    from deploy.sim_backend.world import (
-        CommandsAfterFault,
-        PipeBus,
-        ScaledClock,
-        SimWorld,
-        WorldSpec,
-        lay_down,
-        serve,
-    )
 
 _SOURCES = {
     "deploy.sim_backend.backend": ["free_udp_port", "loopback_config", "SimBackend"],

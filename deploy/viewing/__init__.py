@@ -6,14 +6,7 @@ else.
 
 from __future__ import annotations
 
-from typing import TYPE_CHECKING
-
 from core.lazy_exports import lazy_exports
-
-if TYPE_CHECKING:
-    from deploy.viewing.layout import blueprint, robot_entity
-    from deploy.viewing.rerun_view import LiveSink, RerunLogView, live_sink, open_recording
-    from deploy.viewing.series import SeriesLogger
 
 _SOURCES = {
     "deploy.viewing.layout": ["robot_entity", "blueprint"],

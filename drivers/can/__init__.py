@@ -6,24 +6,7 @@ else.
 
 from __future__ import annotations
 
-from typing import TYPE_CHECKING
-
 from core.lazy_exports import lazy_exports
-
-if TYPE_CHECKING:
-    from drivers.can.bus import CanCounters, EstopMonitor, ForceTorqueSensors
-    from drivers.can.fake import FakeCanNode
-    from drivers.can.protocol import (
-        CanFrameError,
-        EstopHeartbeat,
-        EstopState,
-        WrenchHalf,
-        decode_estop_heartbeat,
-        decode_wrench_half,
-        encode_estop_heartbeat,
-        encode_wrench,
-        is_force_torque_id,
-    )
 
 _SOURCES = {
     "drivers.can.bus": ["CanCounters", "EstopMonitor", "ForceTorqueSensors"],

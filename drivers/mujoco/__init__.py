@@ -6,26 +6,7 @@ else.
 
 from __future__ import annotations
 
-from typing import TYPE_CHECKING
-
 from core.lazy_exports import lazy_exports
-
-if TYPE_CHECKING:
-    from drivers.mujoco.scene import (
-        RobotIndices,
-        TeamScene,
-        build_team_scene,
-        robot_spec,
-        robot_urdf_text,
-        urdf_effort_limits_nm,
-    )
-    from drivers.mujoco.simulation import (
-        SimMocap,
-        SimRobotDriver,
-        SimulatedEstop,
-        SimWrenchSensors,
-        TeamSimulation,
-    )
 
 _SOURCES = {
     "drivers.mujoco.scene": ["robot_urdf_text", "urdf_effort_limits_nm", "robot_spec",

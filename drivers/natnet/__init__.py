@@ -6,36 +6,7 @@ else.
 
 from __future__ import annotations
 
-from typing import TYPE_CHECKING
-
 from core.lazy_exports import lazy_exports
-
-if TYPE_CHECKING:
-    from drivers.natnet.client import (
-        MocapLostError,
-        NatNetClient,
-        NatNetClientConfig,
-        NatNetCounters,
-        NatNetError,
-    )
-    from drivers.natnet.fake import FakeNatNetServer, simulation_pose_source
-    from drivers.natnet.protocol import (
-        FrameOfData,
-        MessageId,
-        NatNetProtocolError,
-        RigidBodyDescription,
-        RigidBodySample,
-        ServerInfo,
-        pack_connect,
-        pack_frame_of_data,
-        pack_message,
-        pack_model_definitions,
-        pack_server_info,
-        unpack_frame_of_data,
-        unpack_message,
-        unpack_model_definitions,
-        unpack_server_info,
-    )
 
 _SOURCES = {
     "drivers.natnet.client": ["NatNetError", "MocapLostError", "NatNetClientConfig",

@@ -6,63 +6,7 @@ else.
 
 from __future__ import annotations
 
-from typing import TYPE_CHECKING
-
 from core.lazy_exports import lazy_exports
-
-if TYPE_CHECKING:
-    from drivers.unitree.a1_driver import A1Driver
-    from drivers.unitree.a1_fake import FakeA1
-    from drivers.unitree.a1_udp_layout import (
-        LayoutError,
-        decode_low_cmd,
-        decode_low_state,
-        encode_low_cmd,
-        encode_low_state,
-    )
-    from drivers.unitree.conventions import (
-        WireCommand,
-        WireState,
-        command_problem,
-        crc32_mpeg2,
-        damping_wire_command,
-        joint_command_from_wire_command,
-        measurement_from_wire_state,
-        rpy_from_quaternion_wxyz,
-        state_problem,
-        unitree_crc32,
-        unitree_crc32_of_packed,
-        wire_command_from_joint_command,
-        wire_state_from_measurement,
-    )
-    from drivers.unitree.go2_dds_types import (
-        BmsCmd_,
-        BmsState_,
-        IMUState_,
-        LowCmd_,
-        LowState_,
-        MotorCmd_,
-        MotorState_,
-        Request_,
-        RequestHeader_,
-        RequestIdentity_,
-        RequestLease_,
-        RequestPolicy_,
-        Response_,
-        ResponseHeader_,
-        ResponseStatus_,
-        api_request,
-        api_response,
-        low_cmd_crc,
-        low_cmd_from_wire,
-        low_cmd_header_ok,
-        low_state_from_wire,
-        wire_from_low_cmd,
-        wire_from_low_state,
-    )
-    from drivers.unitree.go2_driver import Go2Driver, cyclonedds_config, open_participant, topic_name
-    from drivers.unitree.go2_fake import FakeGo2
-    from drivers.unitree.peer import PeriodicThread, UnitreeLowLevelDriver
 
 _SOURCES = {
     "drivers.unitree.a1_driver": ["A1Driver"],
