@@ -137,13 +137,17 @@ class SimWorld:
         self.robot_types = {agent.name: agent.robot_type for agent in scenario.team}
         lay_down(sim, self.robot_types, config.sim.start_lowering_m)
         self.fakes: dict[str, FakeGo2 | FakeA1] = {}
+        self.a1_endpoints: dict[str, tuple[str, int]] = {}
         for name, link in config.robots.items():
             driver = sim.robot_driver(name)
-            self.fakes[name] = (
-                FakeGo2(driver, link.domain_id, None, link.topic_prefix,
-                        link.foot_force_n_per_count) if isinstance(link, Go2Link)
-                else FakeA1(driver, "127.0.0.1", 0,
-                            foot_force_n_per_count=link.foot_force_n_per_count))
+            if isinstance(link, Go2Link):
+                self.fakes[name] = FakeGo2(driver, link.domain_id, None, link.topic_prefix,
+                                           link.foot_force_n_per_count)
+            else:
+                a1 = FakeA1(driver, "127.0.0.1", 0,
+                            foot_force_n_per_count=link.foot_force_n_per_count)
+                self.fakes[name] = a1
+                self.a1_endpoints[name] = a1.local_endpoint
         self.obstacle_bodies = {
             body: (scene.model.geom_pos[geom_id].copy(), scene.model.geom_quat[geom_id].copy())
             for body, geom_id in zip(config.mocap.obstacle_bodies, scene.obstacle_geom_ids,
@@ -200,8 +204,7 @@ class SimWorld:
     def endpoints(self) -> dict[str, Any]:
         """Where the fakes listen: NatNet command port, each A1's UDP (address, port)."""
         return {"natnet_command_port": self.natnet.command_port,
-                "a1": {name: fake.local_endpoint for name, fake in self.fakes.items()
-                       if isinstance(fake, FakeA1)}}
+                "a1": dict(self.a1_endpoints)}
 
     def _poses(self) -> dict[str, Pose]:
         sim = self.simulation
@@ -284,8 +287,7 @@ class SimWorld:
             self.can_node.bus.shutdown()
         self.natnet.close()
         for fake in self.fakes.values():
-            if isinstance(fake, FakeA1):
-                fake.close()
+            fake.close()
 
 
 def serve(spec: WorldSpec, control: Connection, can_link: Connection) -> None:

@@ -152,3 +152,7 @@ class FakeGo2:
     def stop(self) -> None:
         """Stop the background thread (no-op when not started)."""
         self._runner.stop()
+
+    def close(self) -> None:
+        """Stop; the DDS entities go with the participant (one per domain and process)."""
+        self.stop()
