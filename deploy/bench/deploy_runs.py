@@ -5,7 +5,10 @@ process of its own, with the config's ``sim.time_scale`` replaced; the row comes
 summary it prints: outcome, WBC (500 Hz) and NMPC (60 Hz) loop rate and its ratio to the
 nominal one, period jitter |period - nominal| p50 / p99, the work per WBC tick and the NMPC
 update time. Rates and times are in simulated seconds (the loop's clock runs at the time
-scale), so rows at different scales compare directly.
+scale), so rows at different scales compare directly. Two more tables per run: the CPU budget
+(CPU-seconds per simulated second over RUNNING for porter's loop process, each ADMM worker
+and the world process) and the work of one 500 Hz tick split into its stages (wall time,
+both robots, median and p99).
 """
 
 from __future__ import annotations
@@ -70,7 +73,9 @@ def deploy_row(summary: dict[str, Any]) -> dict[str, Any]:
             "wbc_rate_ratio": ratio(wbc), "nmpc_rate_ratio": ratio(nmpc),
             "nmpc_deadline_misses": summary["nmpc_deadline_misses"],
             "wbc_overruns": summary["wbc_overruns"],
-            "progress_toward_goal_m": summary["payload"]["progress_toward_goal_m"]}
+            "progress_toward_goal_m": summary["payload"]["progress_toward_goal_m"],
+            "cpu_per_running_s": summary.get("cpu_per_running_s", {}),
+            "tick_stages_wall": summary.get("tick_stages_wall", {})}
 
 
 def run_bench(config: str, time_scales: list[float], runs: int,
@@ -110,4 +115,34 @@ def format_table(rows: list[dict[str, Any]]) -> str:
     lines.append("ms and Hz in simulated time; ratio = achieved / nominal rate; jit = |period - "
                  "nominal|; busy = work per WBC tick; upd = NMPC update time; miss = updates "
                  "over 1/60 s")
+    return "\n".join(lines)
+
+
+STAGES = ("read", "estimate", "nmpc", "check", "control", "filter", "send", "record", "total")
+
+
+def format_budget(rows: list[dict[str, Any]]) -> str:
+    """CPU-s per simulated second by process, and the tick's stages [ms wall, p50 / p99]."""
+    lines = [f"{'config':<12} {'scale':>5} {'porter':>6} {'workers':>7} {'world':>6} "
+             f"{'total':>6}   CPU-s per simulated s over RUNNING (workers: "
+             "porter-admm-agent*, summed)"]
+    for row in rows:
+        cpu = row.get("cpu_per_running_s") or {}
+        workers = sum(v for k, v in cpu.items() if k.startswith("porter-admm-agent"))
+        lines.append(f"{row['config']:<12} {row['time_scale']:>5.2f} "
+                     f"{_number(cpu.get('porter'), 6, 2)} {_number(workers if cpu else None, 7, 2)} "
+                     f"{_number(cpu.get('porter-sim-world'), 6, 2)} "
+                     f"{_number(sum(cpu.values()) if cpu else None, 6, 2)}")
+    lines.append("")
+    header = f"{'config':<12} {'scale':>5} " + " ".join(f"{s:>13}" for s in STAGES)
+    lines += [header, "-" * len(header)]
+    for row in rows:
+        stages = row.get("tick_stages_wall") or {}
+        cells = []
+        for stage in STAGES:
+            value = stages.get(stage)
+            cells.append(f"{value['p50_ms']:>6.3f}/{value['p99_ms']:<6.3f}"
+                         if isinstance(value, dict) else f"{'-':>13}")
+        lines.append(f"{row['config']:<12} {row['time_scale']:>5.2f} " + " ".join(cells))
+    lines.append("tick stages: wall ms per 500 Hz tick while RUNNING, both robots, p50/p99")
     return "\n".join(lines)

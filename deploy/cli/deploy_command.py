@@ -11,7 +11,6 @@ Ctrl-C / SIGTERM (the team sat down first), 4 the operator declined to arm.
 from __future__ import annotations
 
 import argparse
-import contextlib
 import json
 import math
 import sys
@@ -22,7 +21,6 @@ from pathlib import Path
 from typing import Any
 
 import numpy as np
-import psutil
 
 from core.model.conventions import PAYLOAD_NAME
 from deploy.config.deploy_config import DeployConfig, load_deploy_config
@@ -33,6 +31,7 @@ from deploy.recording.run_record import default_log_path, open_run_recorder
 from deploy.runtime.clock import PacedClock
 from deploy.runtime.codegen_cache import CompiledCodeCache
 from deploy.runtime.controller import TeamController
+from deploy.runtime.cpu_meter import RunningCpu, cpu_seconds
 from deploy.runtime.links import TeamLinks, open_links
 from deploy.runtime.loop import ControlLoop, LoopSettings
 from deploy.runtime.nmpc_schedule import NmpcSchedule
@@ -155,7 +154,8 @@ def deploy_loop(config: DeployConfig, control: TeamController, links: TeamLinks,
 
     loop = ControlLoop(control, links, settings, PacedClock(1.0 / config.rates.wbc_hz, clock,
                                                             sleep),
-                       nmpc, recording, stop, duration_s, "deploy", confirm, preflight)
+                       nmpc, recording, stop, duration_s, "deploy", confirm, preflight,
+                       hooks=RunningCpu(lambda: loop.supervisor.state))
     return loop
 
 
@@ -193,6 +193,7 @@ def deploy_summary(loop: ControlLoop, args: argparse.Namespace,
                       for c in (loop.report.checks if loop.report else [])],
         "duration_s": loop.duration_s, "run_s": run_s,
         "wbc_loop": loop.wbc_stats.summary(),
+        "tick_stages_wall": loop.stages.summary(),
         "nmpc_loop": loop.nmpc.stats.summary(),
         "wbc_overruns": loop.clock.overruns,
         "time_scale": backend.config.sim.time_scale if backend is not None else 1.0,
@@ -203,20 +204,12 @@ def deploy_summary(loop: ControlLoop, args: argparse.Namespace,
     if loop.recording is not None:
         summary["recorder_dropped"] = loop.recording.recorder.dropped
     summary["cpu_s"] = cpu_seconds()
+    # per second of the loop's clock over RUNNING: simulated seconds under --backend sim
+    if isinstance(loop.hooks, RunningCpu):
+        summary["cpu_per_running_s"] = loop.hooks.per_second()
     if backend is not None:
         summary["sim_ground_truth"] = backend.ground_truth()
     return _plain(summary)
-
-
-def cpu_seconds() -> dict[str, float]:
-    """CPU time [s] (user + system) of this process (the loop, NMPC, recorder, MoCap and CAN
-    threads) and of its live children (the simulated world, the ADMM workers)."""
-    this = psutil.Process()
-    result = {"porter": sum(this.cpu_times()[0:2])}
-    for child in this.children(recursive=True):
-        with contextlib.suppress(psutil.Error):
-            result[f"{child.name()} {child.pid}"] = sum(child.cpu_times()[0:2])
-    return result
 
 
 def payload_progress(loop: ControlLoop) -> dict[str, Any]:

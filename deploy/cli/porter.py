@@ -93,13 +93,15 @@ def _bench_drivers(args: argparse.Namespace) -> int:
 def _bench_deploy(args: argparse.Namespace) -> int:
     import json
 
-    from deploy.bench.deploy_runs import format_table, run_bench
+    from deploy.bench.deploy_runs import format_budget, format_table, run_bench
 
     print(f"porter bench deploy: {args.config} on the sim backend, time scales "
           f"{', '.join(f'{s:g}' for s in args.time_scales)}, {args.runs} run(s) each, "
           f"{args.duration:g} s running (plus pre-flight, stand-up and sit-down)")
     rows = run_bench(args.config, args.time_scales, args.runs, args.duration)
     print(format_table(rows))
+    print()
+    print(format_budget(rows))
     if args.json:
         Path(args.json).write_text(json.dumps({"rows": rows}, indent=2) + "\n")
         print(f"wrote {args.json}")

@@ -42,7 +42,7 @@ from deploy.runtime.clock import LoopClock
 from deploy.runtime.controller import TeamController, WbcStep
 from deploy.runtime.links import TeamLinks
 from deploy.runtime.nmpc_schedule import NmpcSchedule
-from deploy.runtime.timing import PeriodStats
+from deploy.runtime.timing import PeriodStats, TickStages
 from deploy.safety.checks import SupervisorSettings, robot_limits
 from deploy.safety.posture import PostureMove, sitting_posture, standing_posture
 from deploy.safety.preflight import PreflightReport
@@ -99,6 +99,7 @@ class ControlLoop:
         self.supervisor = SafetySupervisor(settings.safety, list(self.limits.values()),
                                            self._on_transition)
         self.wbc_stats = PeriodStats(1.0 / settings.rates.wbc_hz)
+        self.stages = TickStages()  # wall time per stage of the RUNNING ticks
         self.required_bodies = [*self.names, PAYLOAD_NAME]
         self.t0 = clock.now()
         self.since: dict[SafetyState, float] = {S.PREFLIGHT: 0.0}
@@ -157,18 +158,24 @@ class ControlLoop:
             self.nmpc.close()
 
     def _tick(self) -> bool:
-        """One loop period; True once the run is over."""
+        """One loop period; True once the run is over. ``stages`` times each part of it."""
+        stages = self.stages
+        stages.start()
         start = self.clock.now()
         t = start - self.t0
         if self.hooks is not None:
             self.hooks.before_tick(t)
-        measurements, link_errors = self._read(t)
+        measurements, link_errors = self._read()
+        frame = self.links.tracker.poll() if self.links.tracker is not None else None
+        stages.mark("read")
+        measurements = self._estimate(t, measurements)
+        stages.mark("estimate")
         if self.sequence == "standing" and self._standing_transitions(t, measurements):
             return True
-        frame = self.links.tracker.poll() if self.links.tracker is not None else None
         flags: tuple[bool | None, bool | None] = (None, None)
         if self.supervisor.state in (S.ARMED, S.RUNNING):
             flags = self.nmpc.step(t, measurements, frame)
+        stages.mark("nmpc")
         estop = self.links.estop.status() if self.links.estop is not None else None
         age = self.links.tracker.age_s(self.required_bodies) if self.links.tracker else None
         self.supervisor.check(SafetyInputs(
@@ -179,31 +186,44 @@ class ControlLoop:
         if self.supervisor.state == S.RUNNING and plan_age_s > max_age_s:
             self.supervisor.trigger_safe_stop(t, f"NMPC stalled: the plan is {plan_age_s:.3f} s "
                                               f"old (max {max_age_s} s)")
+        stages.mark("check")
         commands, steps = self._commands(t, measurements)
+        stages.mark("control")
         sent = self.supervisor.filter_commands(t, commands, measurements)
+        stages.mark("filter")
         self._send(sent)
+        stages.mark("send")
         self._record(t, measurements, sent, steps)
-        if self.supervisor.state == S.RUNNING:
+        stages.mark("record")
+        running = self.supervisor.state == S.RUNNING
+        if running:
             self.wbc_stats.tick(start)
             self.wbc_stats.busy_s.append(self.clock.now() - start)
             for name, m in measurements.items():
                 self.heights[name].append(float(m.position_in_world_m[2]))
+        stages.recording = running
+        stages.finish()
         return self._advance(t, measurements, link_errors, frame)
 
-    def _read(self, t: float) -> tuple[dict[str, RobotMeasurement], dict[str, str]]:
-        """Every robot's measurement, its base velocity fused from legs and MoCap where the
-        driver measures none; a lost link is reported, not raised."""
+    def _read(self) -> tuple[dict[str, RobotMeasurement], dict[str, str]]:
+        """Every robot's measurement; a lost link is reported, not raised."""
         measurements, errors = {}, {}
         for name, driver in self.links.drivers.items():
             try:
-                measurement = driver.read()
+                measurements[name] = driver.read()
             except LinkLostError as error:
                 errors[name] = str(error)
-                continue
-            estimator = self.velocity.get(name)
-            measurements[name] = measurement if estimator is None else replace(
-                measurement, linear_velocity_in_world_m_s=estimator.update(t, measurement))
         return measurements, errors
+
+    def _estimate(self, t: float, measurements: dict[str, RobotMeasurement]
+                  ) -> dict[str, RobotMeasurement]:
+        """The base velocity fused from legs and MoCap where the driver measures none."""
+        for name, estimator in self.velocity.items():
+            if name in measurements:
+                measurement = measurements[name]
+                measurements[name] = replace(measurement, linear_velocity_in_world_m_s=(
+                    estimator.update(t, measurement)))
+        return measurements
 
     def _send(self, commands: dict[str, JointCommand]) -> None:
         for name, command in commands.items():

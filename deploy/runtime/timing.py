@@ -1,10 +1,11 @@
-"""Real-time pacing and period statistics of the deploy loops.
+"""Real-time pacing, period statistics and per-stage tick timing of the control loop.
 
 ``Pacer`` sleeps until the next tick of a fixed-period schedule on an injected monotonic clock
 [s]; a tick that starts more than one period late re-anchors the schedule (no burst of
 catch-up ticks) and counts as an overrun. ``PeriodStats`` keeps the start times of a loop's
 ticks and reports the achieved rate, the period and the period jitter |period - nominal| as
-p50 / p99 [ms].
+p50 / p99 [ms]. ``TickStages`` splits each tick's work into named stages on the wall clock
+(``time.perf_counter``, whatever the loop's clock) and reports median and p99 per stage.
 """
 
 from __future__ import annotations
@@ -68,3 +69,45 @@ class PeriodStats:
             "busy_p50_ms": float(1e3 * np.percentile(busy, 50)) if busy.size else None,
             "busy_p99_ms": float(1e3 * np.percentile(busy, 99)) if busy.size else None,
         }
+
+
+class TickStages:
+    """Wall time of each stage of the loop's ticks: ``start()`` at the top of a tick,
+    ``mark(stage)`` at the end of each stage (the time since the previous mark counts for it),
+    ``finish()`` at the end of a tick (kept only while ``recording``)."""
+
+    def __init__(self, clock: Callable[[], float] = time.perf_counter) -> None:
+        self.clock = clock
+        self.recording = False
+        self.samples_s: dict[str, list[float]] = {}
+        self.totals_s: list[float] = []
+        self._tick: dict[str, float] = {}
+        self._start_s = self._last_s = 0.0
+
+    def start(self) -> None:
+        self._tick = {}
+        self._start_s = self._last_s = self.clock()
+
+    def mark(self, stage: str) -> None:
+        now = self.clock()
+        self._tick[stage] = self._tick.get(stage, 0.0) + now - self._last_s
+        self._last_s = now
+
+    def finish(self) -> None:
+        if not self.recording:
+            return
+        for stage, seconds in self._tick.items():
+            self.samples_s.setdefault(stage, []).append(seconds)
+        self.totals_s.append(self._last_s - self._start_s)
+
+    def summary(self) -> dict[str, dict[str, float] | int]:
+        """Per stage and for the whole tick: p50 / p99 / mean [ms] over the recorded ticks."""
+        def stats(values: list[float]) -> dict[str, float]:
+            v = 1e3 * np.asarray(values)
+            return {"p50_ms": float(np.percentile(v, 50)), "p99_ms": float(np.percentile(v, 99)),
+                    "mean_ms": float(v.mean())}
+        result: dict[str, dict[str, float] | int] = {"ticks": len(self.totals_s)}
+        if self.totals_s:
+            result.update({stage: stats(values) for stage, values in self.samples_s.items()})
+            result["total"] = stats(self.totals_s)
+        return result
