@@ -32,6 +32,7 @@ import pinocchio as pin
 from core.locomotion.settings import WbcSettings
 from core.model.conventions import JOINT_COUNT, LEG_NAMES
 from core.model.rotations import (
+    cross3,
     euler_from_rotation,
     rotation_from_euler,
     rotation_from_quaternion_wxyz,
@@ -127,6 +128,7 @@ class WholeBodyController:
         self._kp_rot = np.array(s.base_orientation_gain)
         self._kd_rot = np.array(s.base_angular_velocity_gain)
         self._last: WbcOutput | None = None
+        self._lower = np.tril_indices(model.nv, -1)
 
     # --- state conversions ---------------------------------------------------------------
     def pinocchio_state(self, state: FloatingBaseState) -> tuple[np.ndarray, np.ndarray]:
@@ -146,7 +148,7 @@ class WholeBodyController:
         offset = rotation @ self.com_offset_in_base_m
         omega = rotation @ state.angular_velocity_in_body_rad_s
         return np.concatenate([state.position_base_in_world_m + offset,
-                               state.linear_velocity_in_world_m_s + np.cross(omega, offset),
+                               state.linear_velocity_in_world_m_s + cross3(omega, offset),
                                euler_from_rotation(rotation), omega])
 
     def foot_positions(self, state: FloatingBaseState) -> np.ndarray:
@@ -165,7 +167,8 @@ class WholeBodyController:
         model, data = self.model, self.data
         q, v = self.pinocchio_state(state)
         pin.computeAllTerms(model, data, q, v)
-        mass = np.triu(data.M) + np.triu(data.M, 1).T
+        mass = np.array(data.M)  # Pinocchio fills the upper triangle; mirror it
+        mass[self._lower] = mass.T[self._lower]
         bias = np.array(data.nle)
         pin.forwardKinematics(model, data, q, v, np.zeros(model.nv))  # data.a = Jdot v
         rotation = state.rotation()
@@ -276,7 +279,7 @@ class WholeBodyController:
         offset_desired = rotation_desired @ self.com_offset_in_base_m
         position_desired = np.asarray(target.com_position_m) - offset_desired
         velocity_desired = (np.asarray(target.com_velocity_m_s)
-                            - np.cross(target.angular_velocity_rad_s, offset_desired))
+                            - cross3(target.angular_velocity_rad_s, offset_desired))
         omega = rotation @ state.angular_velocity_in_body_rad_s
         linear = (np.asarray(target.com_acceleration_m_s2)
                   + self._kp_base * (position_desired - state.position_base_in_world_m)
@@ -285,7 +288,7 @@ class WholeBodyController:
                    + self._kp_rot * pin.log3(rotation_desired @ rotation.T)
                    + self._kd_rot * (np.asarray(target.angular_velocity_rad_s) - omega))
         # Classical -> spatial linear acceleration in the base frame: a_s = a_c - w x v.
-        linear_local = rotation.T @ linear - np.cross(v[3:6], v[0:3])
+        linear_local = rotation.T @ linear - cross3(v[3:6], v[0:3])
         return np.concatenate([linear_local, rotation.T @ angular])
 
     def _coupling_generalized_force(self, wrench_on_robot: np.ndarray, rotation: np.ndarray
@@ -295,4 +298,4 @@ class WholeBodyController:
         force = np.asarray(wrench_on_robot[0:3], dtype=float)
         torque = np.asarray(wrench_on_robot[3:6], dtype=float)
         lever = rotation @ self.coupling_in_base_m
-        return np.concatenate([rotation.T @ force, rotation.T @ (torque + np.cross(lever, force))])
+        return np.concatenate([rotation.T @ force, rotation.T @ (torque + cross3(lever, force))])

@@ -28,7 +28,15 @@ import logging
 import time
 from collections.abc import Callable
 
-from cyclonedds.core import DDSException, ReadCondition, SampleState, ViewState, WaitSet
+from cyclonedds._clayer import ddspy_take, ddspy_write
+from cyclonedds.core import (
+    DDSException,
+    InstanceState,
+    ReadCondition,
+    SampleState,
+    ViewState,
+    WaitSet,
+)
 from cyclonedds.domain import Domain, DomainParticipant
 from cyclonedds.pub import DataWriter
 from cyclonedds.qos import Policy, Qos
@@ -43,6 +51,7 @@ from drivers.unitree.conventions import (
     WireState,
     state_problem,
 )
+from drivers.unitree.go2_cdr import LowCmdCodec, LowStateCodec
 from drivers.unitree.go2_dds_types import (
     MOTOR_MODE_SERVO,
     LowCmd_,
@@ -50,8 +59,6 @@ from drivers.unitree.go2_dds_types import (
     Request_,
     Response_,
     api_request,
-    low_cmd_from_wire,
-    wire_from_low_state,
 )
 from drivers.unitree.peer import UnitreeLowLevelDriver
 
@@ -89,6 +96,23 @@ def open_participant(domain_id: int, network_interface: str | None) -> DomainPar
         raise DriverError(f"DDS domain {domain_id} already runs on interface "
                           f"{_DOMAINS[domain_id][1]!r} in this process; cannot add {interface!r}")
     return DomainParticipant(domain_id)
+
+
+def write_raw(writer: DataWriter, data: bytes) -> None:
+    """Publish already-serialized CDR ``data`` (``drivers.unitree.go2_cdr``) on ``writer``:
+    the C layer's write, as ``DataWriter.write`` calls it after serializing."""
+    code = ddspy_write(writer._ref, data)
+    if code < 0:
+        raise DDSException(code, f"writing {len(data)} bytes on {writer.topic.name}")
+
+
+def take_raw(reader: DataReader, count: int) -> list[bytes]:
+    """The serialized samples pending on ``reader`` (up to ``count``, oldest first), without
+    cyclonedds' Python deserializer; instance-state notifications are skipped."""
+    taken = ddspy_take(reader._ref, SampleState.Any | ViewState.Any | InstanceState.Any, count)
+    if isinstance(taken, int):
+        raise DDSException(taken, f"taking from {reader.topic.name}")
+    return [data for data, info in taken if info.valid_data]
 
 
 def topic_name(prefix: str, name: str) -> str:
@@ -131,14 +155,17 @@ class Go2Driver(UnitreeLowLevelDriver):
                                 link_timeout_s, clock)
         self.commands_sent = 0
         self.last_state: WireState | None = None
+        self._states, self._commands = LowStateCodec(), LowCmdCodec()
 
     def poll(self) -> int:
         """Take every pending state; keep the newest valid one. Returns how many were valid."""
         valid = 0
-        for sample in self._reader.take(N=64):
-            if not isinstance(sample, LowState_):
-                continue  # instance-state notification, no data
-            state = wire_from_low_state(sample)
+        for data in take_raw(self._reader, 64):
+            try:
+                state = self._states.decode(data)
+            except ValueError:
+                self.link.reject("encoding")
+                continue
             problem = state_problem(state)
             if problem is not None:
                 self.link.reject(problem)
@@ -152,7 +179,7 @@ class Go2Driver(UnitreeLowLevelDriver):
 
     def send_wire(self, wire: WireCommand) -> None:
         """Publish a wire-convention command as a ``LowCmd_`` (head, level flag, CRC set)."""
-        self._writer.write(low_cmd_from_wire(wire))
+        write_raw(self._writer, self._commands.encode(wire))
         self.commands_sent += 1
 
     def release_sport_mode(self, timeout_s: float = 2.0) -> int:

@@ -27,27 +27,27 @@ from cyclonedds.util import duration
 
 from drivers.interfaces import JointCommand, RobotDriver
 from drivers.unitree.conventions import (
+    WireCommand,
     command_problem,
     joint_command_from_wire_command,
     wire_state_from_measurement,
 )
+from drivers.unitree.go2_cdr import LowCmdCodec, LowStateCodec
 from drivers.unitree.go2_dds_types import (
     LowCmd_,
     LowState_,
     Request_,
     Response_,
     api_response,
-    low_cmd_crc,
-    low_cmd_header_ok,
-    low_state_from_wire,
-    wire_from_low_cmd,
 )
 from drivers.unitree.go2_driver import (
     API_ID_RELEASE_MODE,
     MOTION_SWITCHER_SERVICE,
     REQUEST_QOS,
     open_participant,
+    take_raw,
     topic_name,
+    write_raw,
 )
 from drivers.unitree.peer import PeriodicThread
 
@@ -83,6 +83,7 @@ class FakeGo2:
         self.last_command: JointCommand | None = None
         self.sport_mode_released = False
         self._runner = PeriodicThread("FakeGo2")
+        self._states, self._commands = LowStateCodec(), LowCmdCodec()
         self._command_waitset = WaitSet(p)
         self._command_waitset.attach(ReadCondition(self._command_reader,
                                                    SampleState.NotRead | ViewState.Any))
@@ -97,7 +98,7 @@ class FakeGo2:
         measurement = self.driver.read()
         wire = wire_state_from_measurement(measurement, self.foot_force_n_per_count,
                                            tick_ms=round(measurement.time_s * 1000.0))
-        self._state_writer.write(low_state_from_wire(wire))
+        write_raw(self._state_writer, self._states.encode(wire))
         self.states_published += 1
 
     def poll_commands(self) -> bool:
@@ -105,15 +106,13 @@ class FakeGo2:
         sim driver. Returns whether a new command was applied. Also serves ReleaseMode."""
         self._serve_motion_switcher()
         newest: JointCommand | None = None
-        for cmd in self._command_reader.take(N=32):
-            if not isinstance(cmd, LowCmd_):
-                continue
+        for data in take_raw(self._command_reader, 32):
             self.commands_received += 1
-            problem = self._command_problem(cmd)
-            if problem is not None:
-                self.commands_rejected[problem] += 1
+            problem, wire = self._command_problem(data)
+            if problem is not None or wire is None:
+                self.commands_rejected[problem or "encoding"] += 1
                 continue
-            newest = joint_command_from_wire_command(wire_from_low_cmd(cmd))
+            newest = joint_command_from_wire_command(wire)
         if newest is None:
             return False
         self.driver.send(newest)
@@ -124,13 +123,17 @@ class FakeGo2:
     def commands_rejected_total(self) -> int:
         return sum(self.commands_rejected.values())
 
-    @staticmethod
-    def _command_problem(cmd: LowCmd_) -> str | None:
-        if low_cmd_crc(cmd) != cmd.crc:
-            return "crc"
-        if not low_cmd_header_ok(cmd):
-            return "header"
-        return command_problem(wire_from_low_cmd(cmd))
+    def _command_problem(self, data: bytes) -> tuple[str | None, WireCommand | None]:
+        """Why a received ``LowCmd_`` must be rejected (or None), and its values."""
+        try:
+            wire, header_ok, crc_ok = self._commands.decode(data)
+        except ValueError:
+            return "encoding", None
+        if not crc_ok:
+            return "crc", wire
+        if not header_ok:
+            return "header", wire
+        return command_problem(wire), wire
 
     def _serve_motion_switcher(self) -> None:
         for request in self._request_reader.take(N=8):
