@@ -341,4 +341,5 @@ def test_period_stats_of_a_real_sleep_loop() -> None:
     for _ in range(20):
         stats.tick(time.monotonic())
         pacer.wait()
-    assert stats.summary()["rate_hz"] == pytest.approx(200.0, rel=0.3)
+    # never faster than its period; slower only as far as a loaded machine makes it
+    assert 50.0 <= stats.summary()["rate_hz"] <= 200.0 * 1.02

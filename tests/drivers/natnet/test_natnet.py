@@ -191,16 +191,17 @@ def test_malformed_packets_are_counted_and_ignored(link):
     assert client.counters.frames_received == 1
 
 
-@pytest.mark.parametrize("link", [{"client": {"stale_timeout_s": 0.05}}], indirect=True)
+# 0.5 s: a margin that holds on a loaded 2-core machine (the behaviour, not the figure)
+@pytest.mark.parametrize("link", [{"client": {"stale_timeout_s": 0.5}}], indirect=True)
 def test_staleness_detected_and_recovery_after_the_stream_resumes(link):
     server, client = link
     assert client.latest() is None and client.is_stale()
     with pytest.raises(MocapLostError, match="no NatNet frame"):
         client.check()
     _publish_and_wait(server, client)
-    assert not client.is_stale() and client.age_s() < 0.05
+    assert not client.is_stale() and client.age_s() < 0.5
     client.check()
-    time.sleep(0.08)
+    time.sleep(0.6)
     assert client.is_stale()
     with pytest.raises(MocapLostError):
         client.check()
