@@ -109,9 +109,18 @@ class FootholdPlanner:
                       velocity_reference: np.ndarray) -> np.ndarray:
         """(4, 3) touchdown targets [m] of each leg's next touchdown (Raibert, re-evaluated from
         the measured trunk ``robot_state`` with each leg's own time to touchdown)."""
-        lead = self.gait.time_to_touchdown_s(time_s)
-        return np.array([self._raibert(robot_state, float(lead[leg]), velocity_reference)[leg]
-                         for leg in range(4)])
+        lead = np.asarray(self.gait.time_to_touchdown_s(time_s), dtype=float)
+        # _raibert with each leg's own lead time, for all legs at once (the same arithmetic)
+        state = np.asarray(robot_state, dtype=float)
+        velocity = state[3:6]
+        neutral = self.robot.nominal_feet_in_body_m
+        if neutral is None:
+            neutral = self.robot.hip_positions_in_body_m
+        hips = (state[0:3] + lead[:, None] * velocity) + neutral @ yaw_rotation(state[8]).T
+        feet = hips + velocity_reference * self.gait.stance_duration_s / 2 + (
+            self.velocity_gain * (velocity - velocity_reference))
+        feet[:, 2] = self.ground_height_m
+        return feet
 
     def set_feet(self, feet_in_world_m: np.ndarray, mask: np.ndarray) -> None:
         """Overwrite the stored positions of the legs in ``mask`` (e.g. with measured
