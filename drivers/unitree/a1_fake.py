@@ -17,7 +17,6 @@ from __future__ import annotations
 import select
 import socket
 from collections import Counter
-from collections.abc import Callable
 
 from drivers.interfaces import JointCommand, RobotDriver
 from drivers.unitree.a1_udp_layout import (
@@ -34,10 +33,10 @@ from drivers.unitree.conventions import (
     joint_command_from_wire_command,
     wire_state_from_measurement,
 )
-from drivers.unitree.peer import PeriodicThread
+from drivers.unitree.peer import PeriodicThread, RealTimeFake
 
 
-class FakeA1:
+class FakeA1(RealTimeFake):
     """UDP peer of an ``A1Driver``, backed by the simulated ``driver``. ``local_port`` 0 picks
     a free port (``local_endpoint`` tells which; give it to the driver as robot address)."""
 
@@ -119,12 +118,3 @@ class FakeA1:
         self.states_published += 1
         return True
 
-    def start(self, rate_hz: float, step: Callable[[], None] | None = None) -> None:
-        """Run ``step`` (e.g. advance the simulation), ``poll_commands`` and ``publish_state``
-        every 1 / ``rate_hz`` s in a daemon thread until ``stop``."""
-        calls: list[Callable[[], object]] = [] if step is None else [step]
-        self._runner.start(rate_hz, [*calls, self.poll_commands, self.publish_state])
-
-    def stop(self) -> None:
-        """Stop the background thread (no-op when not started)."""
-        self._runner.stop()

@@ -16,7 +16,6 @@ real-time use; the caller keeps the simulation safe from concurrent access.
 from __future__ import annotations
 
 from collections import Counter
-from collections.abc import Callable
 
 from cyclonedds.core import ReadCondition, SampleState, ViewState, WaitSet
 from cyclonedds.pub import DataWriter
@@ -49,13 +48,13 @@ from drivers.unitree.go2_driver import (
     topic_name,
     write_raw,
 )
-from drivers.unitree.peer import PeriodicThread
+from drivers.unitree.peer import PeriodicThread, RealTimeFake
 
 API_NOT_IMPLEMENTED_CODE = 3102  # unitree_sdk2 RPC_ERR_SERVER_API_NOT_IMPL
 COMMAND_QUEUE = Qos(Policy.Reliability.BestEffort, Policy.History.KeepLast(32))
 
 
-class FakeGo2:
+class FakeGo2(RealTimeFake):
     """DDS peer of a ``Go2Driver``, backed by the simulated ``driver``. Same ``domain_id``,
     ``network_interface`` (loopback when None) and ``topic_prefix`` as the driver's."""
 
@@ -144,17 +143,6 @@ class FakeGo2:
             self.sport_mode_released |= code == 0
             if not request.header.policy.noreply:
                 self._response_writer.write(api_response(request, code))
-
-    # --- real-time use ------------------------------------------------------------------
-    def start(self, rate_hz: float, step: Callable[[], None] | None = None) -> None:
-        """Run ``step`` (e.g. advance the simulation), ``poll_commands`` and ``publish_state``
-        every 1 / ``rate_hz`` s in a daemon thread until ``stop``."""
-        calls: list[Callable[[], object]] = [] if step is None else [step]
-        self._runner.start(rate_hz, [*calls, self.poll_commands, self.publish_state])
-
-    def stop(self) -> None:
-        """Stop the background thread (no-op when not started)."""
-        self._runner.stop()
 
     def close(self) -> None:
         """Stop; the DDS entities go with the participant (one per domain and process)."""

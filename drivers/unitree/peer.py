@@ -119,3 +119,25 @@ class PeriodicThread:
         if self._thread is not None:
             self._thread.join()
             self._thread = None
+
+
+class RealTimeFake:
+    """The real-time mode shared by the robot fakes: ``start`` runs a step (e.g. advancing the
+    simulation), ``poll_commands`` and ``publish_state`` every 1 / ``rate_hz`` s in a daemon
+    thread until ``stop``. Subclasses set ``_runner`` and define the two calls."""
+
+    _runner: PeriodicThread
+
+    def poll_commands(self) -> bool:
+        raise NotImplementedError
+
+    def publish_state(self) -> object:
+        raise NotImplementedError
+
+    def start(self, rate_hz: float, step: Callable[[], None] | None = None) -> None:
+        calls: list[Callable[[], object]] = [] if step is None else [step]
+        self._runner.start(rate_hz, [*calls, self.poll_commands, self.publish_state])
+
+    def stop(self) -> None:
+        """Stop the background thread (no-op when not started)."""
+        self._runner.stop()

