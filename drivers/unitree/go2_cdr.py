@@ -188,6 +188,11 @@ class LowCmdCodec:
                        for f in ("q", "dq", "tau", "kp", "kd")]
         self._crc = self.wire.view(self._buffer, "crc", 4)
         self._words = np.frombuffer(self._memory, "<u4", count=LOW_CMD_CRC_WORDS)
+        # every field's bytes: where they sit in the C struct <- where they sit on the wire
+        # (after the header), so a received message is re-laid for its CRC in one gather
+        leaves = list(self.wire.leaves)
+        self._to_memory = np.concatenate([self.memory.leaves[p].byte_index for p in leaves])
+        self._from_wire = np.concatenate([self.wire.leaves[p].byte_index for p in leaves]) + 4
 
     def encode(self, command: WireCommand) -> bytes:
         """The wire bytes of ``command`` with its CRC filled in."""
@@ -213,10 +218,9 @@ class LowCmdCodec:
         head = tuple(int(v) for v in self.wire.view(data, "head", 4))
         header_ok = head == HEAD and int(self.wire.view(data, "level_flag", 4)[0]) == \
             LEVEL_FLAG_LOW
-        memory = bytearray(self.memory.size)
-        for path in self.wire.leaves:
-            self.memory.write(memory, path, self.wire.view(data, path, 4))
-        expected = unitree_crc32(np.frombuffer(memory, "<u4", count=LOW_CMD_CRC_WORDS))
+        memory = np.zeros(self.memory.size, np.uint8)  # the C struct's padding stays zero
+        memory[self._to_memory] = np.frombuffer(data, np.uint8)[self._from_wire]
+        expected = unitree_crc32(memory[:4 * LOW_CMD_CRC_WORDS].view("<u4"))
         return command, header_ok, expected == int(self.wire.view(data, "crc", 4)[0])
 
 
