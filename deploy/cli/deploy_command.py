@@ -26,7 +26,6 @@ from core.model.conventions import PAYLOAD_NAME
 from deploy.config.deploy_config import DeployConfig, load_deploy_config
 from deploy.config.files import ConfigError
 from deploy.recording.flight_recorder import FlightRecorder
-from deploy.recording.loop_recording import LoopRecording
 from deploy.recording.run_record import default_log_path, open_run_recorder
 from deploy.runtime.clock import PacedClock
 from deploy.runtime.codegen_cache import CompiledCodeCache
@@ -137,11 +136,7 @@ def deploy_loop(config: DeployConfig, control: TeamController, links: TeamLinks,
                 sleep: Callable[[float], None] = time.sleep) -> ControlLoop:
     """The control loop on the paced clock, through the deploy sequence (pre-flight, stand
     up, arm, run, sit down), the NMPC in its thread."""
-    recording = None if recorder is None else LoopRecording(
-        recorder, control.robot_names, control.obstacles,
-        [o.height_m for o in control.scenario.obstacles],
-        control.settings.safety.safety_distance_m, control.settings.sample_period_s,
-        np.asarray(control.scenario.payload.size_m))
+    recording = None if recorder is None else control.loop_recording(recorder)
     nmpc = NmpcSchedule(control, NmpcThread(control, clock), config.rates.nmpc_hz, clock,
                         recording, links.force_torque)
     settings = LoopSettings(config.rates, config.safety, config.posture,

@@ -36,6 +36,8 @@ from core.nmpc.mpc_inputs import MpcInputs
 from core.nmpc.mpc_plan import MpcPlan
 from core.nmpc.settings import MpcSettings
 from deploy.config.scenario import Scenario
+from deploy.recording.flight_recorder import FlightRecorder
+from deploy.recording.loop_recording import LoopRecording
 from deploy.runtime.codegen_cache import CompiledCodeCache
 from deploy.runtime.process_executor import ProcessExecutor
 from drivers.interfaces import JointCommand, MocapFrame, RobotMeasurement
@@ -142,6 +144,14 @@ class TeamController:
     @property
     def robot_names(self) -> list[str]:
         return [robot.name for robot in self.robots]
+
+    def loop_recording(self, recorder: FlightRecorder) -> LoopRecording:
+        """What the control loop records of this team to ``recorder``."""
+        scenario = self.scenario
+        return LoopRecording(recorder, self.robot_names, self.obstacles,
+                             [o.height_m for o in scenario.obstacles],
+                             self.settings.safety.safety_distance_m,
+                             self.settings.sample_period_s, np.asarray(scenario.payload.size_m))
 
     def close(self) -> None:
         """Stop the ADMM worker processes (if any)."""

@@ -98,11 +98,7 @@ class SimRun:
 
     def attach_recorder(self, recorder: FlightRecorder) -> None:
         """Record the run to ``recorder`` (what and when: ``deploy.recording.loop_recording``)."""
-        self.recording = LoopRecording(
-            recorder, self.control.robot_names, self.obstacles,
-            [o.height_m for o in self.scenario.obstacles],
-            self.settings.safety.safety_distance_m, self.settings.sample_period_s,
-            np.asarray(self.scenario.payload.size_m))
+        self.recording = self.control.loop_recording(recorder)
 
     def _pair_names(self) -> list[str]:
         bodies = [PAYLOAD_NAME, *self.control.robot_names]
