@@ -83,10 +83,13 @@ class NlpSolver:
         source: object = problem.casadi_dict()
         if self.compiled:
             assert compiler is not None
-            generator = ca.nlpsol(f"{problem.name}_gen", plugin, problem.casadi_dict(), options)
             key = problem_key(problem, plugin)
 
             def generate_c(path: str) -> None:
+                # Created only on a cache miss, after the compiler has set up the process's
+                # native libraries (the first nlpsol of a plugin loads its BLAS).
+                generator = ca.nlpsol(f"{problem.name}_gen", plugin, problem.casadi_dict(),
+                                      options)
                 generator.generate_dependencies(path)
 
             source = compiler.library_for(problem.name, key, generate_c)

@@ -133,6 +133,9 @@ def run_bench(agent_counts: list[int], solver: str, duration_s: float, parallel:
     rows = []
     checks = []
     cache = CompiledCodeCache()
+    kernels = cache.blas_kernels()
+    log(f"  BLAS kernels under fatrop/hpipm: BLASFEO {kernels.target}"
+        + (f" ({kernels.reason})" if kernels.reason else ""))
     for agents in agent_counts:
         scenario = standard_scenario(agents, srb_parameters)
         team = scenario.team

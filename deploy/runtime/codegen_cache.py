@@ -19,6 +19,10 @@ variables, 17 iterations; interpreted CasADi: 42 ms per solve):
     -Os         81             13.2
 
 ``-O1`` gets the ``-O2`` solve time for 40 % of its compile time.
+
+The cache also owns the BLAS kernels under the solvers: before its first library is handed
+out in a process it loads BLASFEO built for this CPU (``deploy.runtime.blas_kernels``), so the
+fatrop and hpipm plugins CasADi loads afterwards use it instead of CasADi's generic build.
 """
 
 from __future__ import annotations
@@ -32,6 +36,8 @@ import tempfile
 import threading
 from collections.abc import Callable, Iterator
 from pathlib import Path
+
+from deploy.runtime.blas_kernels import BlasKernels, load_blas_kernels
 
 DEFAULT_FLAGS: tuple[str, ...] = ("-O1",)
 CACHE_DIR_VARIABLE = "PORTER_CACHE_DIR"
@@ -71,12 +77,29 @@ class CompiledCodeCache:
         directory: Path | None = None,
         compiler: str = "gcc",
         flags: tuple[str, ...] = DEFAULT_FLAGS,
+        blas_target: str = "auto",
+        kernel_directory: Path | None = None,
     ) -> None:
+        """``blas_target``: ``auto`` (this CPU's BLASFEO kernels), ``generic`` (CasADi's) or a
+        BLASFEO target name; the kernels live in ``kernel_directory`` (default: the shared
+        cache, so caches in scratch directories do not rebuild them)."""
         self.directory = Path(directory) if directory is not None else default_cache_directory()
         self.compiler = compiler
         self.flags = tuple(flags)
+        self.blas_target = blas_target
+        self.kernel_directory = (Path(kernel_directory) if kernel_directory is not None
+                                 else default_cache_directory())
+        self._kernels: tuple[int, BlasKernels] | None = None  # (process id, kernels)
         build = "\0".join((compiler, *self.flags)).encode()
         self._flags_hash = hashlib.sha256(build).hexdigest()[:8]
+
+    def blas_kernels(self) -> BlasKernels:
+        """The BLASFEO this process's solvers use, loaded on the first call in each process
+        (a cache pickled into a worker process loads it there again)."""
+        if self._kernels is None or self._kernels[0] != os.getpid():
+            kernels = load_blas_kernels(self.kernel_directory, self.blas_target, self.compiler)
+            self._kernels = (os.getpid(), kernels)
+        return self._kernels[1]
 
     def library_path(self, name: str, key: str) -> Path:
         """Where the library for (``name``, ``key``) with this compiler and flags lives."""
@@ -89,6 +112,7 @@ class CompiledCodeCache:
         temporary directory, because ``Function.generate_dependencies`` (its usual value) only
         writes into the current directory and rejects paths.
         """
+        self.blas_kernels()  # before any solver plugin (and its BLASFEO) is loaded
         library = self.library_path(name, key)
         if library.exists():
             return str(library)

@@ -1,0 +1,103 @@
+/**************************************************************************************************
+*                                                                                                 *
+* This file is part of BLASFEO.                                                                   *
+*                                                                                                 *
+* BLASFEO -- BLAS for embedded optimization.                                                      *
+* Copyright (C) 2019 by Gianluca Frison.                                                          *
+* Developed at IMTEK (University of Freiburg) under the supervision of Moritz Diehl.              *
+* All rights reserved.                                                                            *
+*                                                                                                 *
+* The 2-Clause BSD License                                                                        *
+*                                                                                                 *
+* Redistribution and use in source and binary forms, with or without                              *
+* modification, are permitted provided that the following conditions are met:                     *
+*                                                                                                 *
+* 1. Redistributions of source code must retain the above copyright notice, this                  *
+*    list of conditions and the following disclaimer.                                             *
+* 2. Redistributions in binary form must reproduce the above copyright notice,                    *
+*    this list of conditions and the following disclaimer in the documentation                    *
+*    and/or other materials provided with the distribution.                                       *
+*                                                                                                 *
+* THIS SOFTWARE IS PROVIDED BY THE COPYRIGHT HOLDERS AND CONTRIBUTORS "AS IS" AND                 *
+* ANY EXPRESS OR IMPLIED WARRANTIES, INCLUDING, BUT NOT LIMITED TO, THE IMPLIED                   *
+* WARRANTIES OF MERCHANTABILITY AND FITNESS FOR A PARTICULAR PURPOSE ARE                          *
+* DISCLAIMED. IN NO EVENT SHALL THE COPYRIGHT OWNER OR CONTRIBUTORS BE LIABLE FOR                 *
+* ANY DIRECT, INDIRECT, INCIDENTAL, SPECIAL, EXEMPLARY, OR CONSEQUENTIAL DAMAGES                  *
+* (INCLUDING, BUT NOT LIMITED TO, PROCUREMENT OF SUBSTITUTE GOODS OR SERVICES;                    *
+* LOSS OF USE, DATA, OR PROFITS; OR BUSINESS INTERRUPTION) HOWEVER CAUSED AND                     *
+* ON ANY THEORY OF LIABILITY, WHETHER IN CONTRACT, STRICT LIABILITY, OR TORT                      *
+* (INCLUDING NEGLIGENCE OR OTHERWISE) ARISING IN ANY WAY OUT OF THE USE OF THIS                   *
+* SOFTWARE, EVEN IF ADVISED OF THE POSSIBILITY OF SUCH DAMAGE.                                    *
+*                                                                                                 *
+* Author: Gianluca Frison, gianluca.frison (at) imtek.uni-freiburg.de                             *
+*                                                                                                 *
+**************************************************************************************************/
+
+#include <stdlib.h>
+#include <stdio.h>
+
+#include <blasfeo_target.h>
+#include <blasfeo_common.h>
+#include <blasfeo_d_aux.h>
+#include <blasfeo_d_kernel.h>
+
+
+#if defined(FORTRAN_BLAS_API)
+#define blasfeo_blas_ddot ddot_
+#endif
+
+
+double blasfeo_blas_ddot(int *pn, double *x, int *pincx, double *y, int *pincy)
+	{
+	int n = *pn;
+	int incx = *pincx;
+	int incy = *pincy;
+
+	int ix, iy;
+	int ii;
+
+	double res = 0.0;
+
+	if(n<=0)
+		{
+		return res;
+		}
+
+	if ((incx==1) & (incy==1))
+		{
+#if defined(LA_REFERENCE)
+		for(ii=0; ii<n; ii++)
+			res += x[ii]*y[ii];
+#else
+		kernel_ddot_11_lib(n, x, y, &res);
+#endif
+		}
+	else
+		{
+		if(incx<0)
+			{
+			ix = - (n-1) * incx;
+			}
+		else
+			{
+			ix = 0;
+			}
+		if(incy<0)
+			{
+			iy = - (n-1) * incy;
+			}
+		else
+			{
+			iy = 0;
+			}
+		for(ii=0; ii<n; ii++)
+			{
+			res += x[ix]*y[iy];
+			ix += incx;
+			iy += incy;
+			}
+		}
+	return res;
+
+	}
+
