@@ -109,6 +109,8 @@ def build_blasfeo(directory: Path, target: str, compiler: str = "gcc",
         with tempfile.TemporaryDirectory(prefix=".build_", dir=library.parent) as scratch:
             tree = Path(scratch) / "blasfeo"
             shutil.copytree(source, tree)
+            # git keeps no empty folders: the Makefile moves its output into lib/.
+            (tree / "lib").mkdir(exist_ok=True)
             jobs = str(max(1, os.cpu_count() or 1))
             command = ["make", "-s", f"-j{jobs}", "shared_library", f"TARGET={target}",
                        f"CC={compiler}"]
