@@ -4,6 +4,9 @@ Three configurations (``SolverSettings.name``):
 
 * ``fatrop``: structure-exploiting interior point (shipped with CasADi), stage structure given
   explicitly, derivatives code-generated and compiled when a compiler is supplied.
+* ``rti``: real-time iteration: ``sqp_steps`` full SQP steps (default 1) from the warm start,
+  each a stage-wise QP solved by HPIPM, with the objective's Hessian (Gauss-Newton for this
+  least-squares cost) so every QP is convex; a cold start iterates to convergence.
 * ``ipopt``: IPOPT + MUMPS with compiled derivatives, primal-dual warm start, monotone mu.
 * ``ipopt-reference``: the paper-faithful configuration kept for comparison: IPOPT + MUMPS on
   interpreted CasADi expressions, primal warm start only, adaptive mu, tol 1e-6.
@@ -100,6 +103,14 @@ class NlpSolver:
         # tuned solver first and falls back to this one. Same compiled library.
         cold = {k: v for k, v in options.items()
                 if k not in ("fatrop.mu_init", "fatrop.bound_push", "fatrop.bound_frac")}
+        if plugin == "sqpmethod":
+            # A real-time iteration needs a converged start: without a previous solution the
+            # SQP runs to convergence (up to max_iterations steps) instead of taking one step,
+            # on HPIPM's robust mode (the fast mode stalls an iterated SQP ~1 N off, measured).
+            qp = options["qpsol_options"]
+            cold["max_iter"] = settings.max_iterations
+            cold["qpsol_options"] = {**qp, "hpipm": {**qp["hpipm"], "mode": "robust",
+                                                     "iter_max": max(100, qp["hpipm"]["iter_max"])}}
         self._cold_solver = (ca.nlpsol(f"{problem.name}_cold", plugin, source, cold)  # type: ignore[call-overload]
                              if cold != options else None)
         self._lbg = problem.lower_constraints
@@ -126,6 +137,32 @@ class NlpSolver:
                 "fatrop.bound_push": s.bound_push,
                 "fatrop.bound_frac": s.bound_push,
             }
+        if s.name == "rti":
+            structure = self.problem.structure
+            return "sqpmethod", {
+                **common,
+                "qpsol": "hpipm",
+                "qpsol_options": {
+                    "N": len(structure.state_sizes) - 1,
+                    "nx": structure.state_sizes,
+                    "nu": structure.input_sizes,
+                    "ng": structure.path_constraint_counts,
+                    "hpipm": {"mode": s.qp_mode, "iter_max": s.qp_max_iterations},
+                    # Unbounded steps get this box (HPIPM has no infinite bounds): far beyond
+                    # any step of a position [m], force [N] or velocity here; CasADi's 1e8
+                    # made the robust mode stall at its iteration limit (measured).
+                    "inf": 1e4,
+                    "error_on_fail": False,
+                },
+                "max_iter": s.sqp_steps,
+                "hess_lag": self._objective_hessian(),
+                "max_iter_ls": 0,  # full steps: the step is the real-time iteration
+                "tol_pr": s.tolerance,
+                "tol_du": s.tolerance,
+                "print_header": False,
+                "print_iteration": False,
+                "print_status": False,
+            }
         ipopt = {
             "ipopt.print_level": 0,
             "ipopt.sb": "yes",
@@ -145,6 +182,19 @@ class NlpSolver:
             }
         return "ipopt", {**common, **ipopt}
 
+    def _objective_hessian(self) -> ca.Function:
+        """Hessian of the objective alone as the SQP's Lagrangian Hessian (Gauss-Newton for
+        this least-squares cost: constant, positive semi-definite, constraint curvature left
+        out), so every QP is convex without regularization and costs no Hessian evaluation."""
+        x = self.problem.decision.vector()
+        p = self.problem.parameters.vector()
+        objective_weight = ca.SX.sym("lam_f")
+        multipliers = ca.SX.sym("lam_g", self.problem.constraints.numel())
+        hessian = ca.hessian(self.problem.objective, x)[0]
+        return ca.Function("nlp_hess_l", [x, p, objective_weight, multipliers],
+                           [ca.triu(objective_weight * hessian)],
+                           ["x", "p", "lam_f", "lam_g"], ["triu_hess_gamma_x_x"])
+
     def solve(
         self,
         initial_guess: np.ndarray,
@@ -157,7 +207,11 @@ class NlpSolver:
     ) -> NlpSolution:
         """Solve from ``initial_guess``; duals are used only by configurations that take them.
         With ``warm_start=False`` (the guess is no previous solution) a failed solve is retried
-        once with the solver's default (cold-start) settings; the stats then cover both."""
+        once with the solver's default (cold-start) settings; the stats then cover both; ``rti``
+        then iterates to convergence instead of taking its fixed steps."""
+        if not warm_start and self._plugin == "sqpmethod" and self._cold_solver is not None:
+            return self._solve_with(self._cold_solver, initial_guess, parameters, lower_bounds,
+                                    upper_bounds, None, None)
         solution = self._solve_with(self._solver, initial_guess, parameters, lower_bounds,
                                     upper_bounds, constraint_multipliers, bound_multipliers)
         if warm_start or solution.stats.success or self._cold_solver is None:
@@ -213,9 +267,15 @@ class NlpSolver:
         raw = solver.stats()
         objective = float(result["f"])
         finite = bool(np.all(np.isfinite(x)) and np.isfinite(objective))
+        status = str(raw.get("return_status", raw.get("unified_return_status", "unknown")))
+        # A real-time iteration ends at its step limit by design: it succeeded when every
+        # step's QP was solved (sqpmethod stops with another status when one is not); a step
+        # below sqpmethod's minimum size means the iterate is already stationary.
+        stepped = self._plugin == "sqpmethod" and status in (
+            "Maximum_Iterations_Exceeded", "Search_Direction_Becomes_Too_Small")
         stats = SolveStats(
-            status=str(raw.get("return_status", raw.get("unified_return_status", "unknown"))),
-            success=bool(raw.get("success", False)) and finite,
+            status=status,
+            success=(bool(raw.get("success", False)) or stepped) and finite,
             iterations=int(raw.get("iter_count", -1)),
             wall_time_s=wall,
             objective=objective,

@@ -24,18 +24,35 @@ def shift_blocks(offsets: dict[str, tuple[int, int]], values: np.ndarray) -> np.
     """``values`` laid out in ``<block>@<stage>`` blocks, each block moved one stage earlier;
     a block's last stage is repeated, and a block that exists at one stage only (the initial
     condition) keeps its value."""
+    source = np.asarray(values, dtype=float)
+    index = _shift_index(offsets)
+    if index.size < source.size:  # entries outside every block keep their value
+        index = np.concatenate([index, np.arange(index.size, source.size)])
+    return source[index]
+
+
+# Index maps of shift_blocks per layout (a problem's layouts only grow while it is built, so a
+# map is rebuilt when the block count changed); parsing block names on every update cost ~1 ms.
+_SHIFT_INDEX: dict[int, tuple[dict[str, tuple[int, int]], int, np.ndarray]] = {}
+
+
+def _shift_index(offsets: dict[str, tuple[int, int]]) -> np.ndarray:
+    cached = _SHIFT_INDEX.get(id(offsets))
+    if cached is not None and cached[0] is offsets and cached[1] == len(offsets):
+        return cached[2]
     last: dict[str, int] = {}
     for name in offsets:
         base, stage = name.rsplit("@", 1)
         last[base] = max(last.get(base, 0), int(stage))
-    source_values = np.asarray(values, dtype=float)
-    shifted = source_values.copy()
+    size_total = max((start + size for start, size in offsets.values()), default=0)
+    index = np.arange(size_total)
     for name, (start, size) in offsets.items():
         base, stage = name.rsplit("@", 1)
         source_start, source_size = offsets[f"{base}@{min(int(stage) + 1, last[base])}"]
         if source_size == size:
-            shifted[start : start + size] = source_values[source_start : source_start + size]
-    return shifted
+            index[start : start + size] = np.arange(source_start, source_start + size)
+    _SHIFT_INDEX[id(offsets)] = (offsets, len(offsets), index)
+    return index
 
 
 def shift_solution(layout: BlockLayout, horizon_steps: int, solution: np.ndarray) -> np.ndarray:

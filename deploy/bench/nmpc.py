@@ -1,7 +1,8 @@
 """``porter bench nmpc``: closed-loop NMPC timing in the shape of the paper's Table I.
 
 For each team size, in one run: the centralized NMPC and the ADMM distributed NMPC (process
-executor: local solves in parallel, as on the robots) with the chosen solver, plus the ADMM
+executor: local solves in parallel, as on the robots) with each chosen solver (default
+``fatrop`` and ``rti``), today's fatrop path (CasADi's generic BLASFEO), and the ADMM
 distributed NMPC with the paper-faithful ``ipopt-reference`` configuration. Every controller
 drives the SRB plant through the standard scenario (0.3 m/s past CBF-active obstacles).
 """
@@ -23,9 +24,12 @@ from core.nmpc.transport_problem import build_transport_problem
 from core.nmpc.warm_start import initial_guess
 from core.plant.closed_loop import ClosedLoopResult, run_closed_loop
 from core.plant.standard_scenarios import standard_scenario
+from deploy.bench.rti_fidelity import RtiFidelity, rti_fidelity
 from deploy.runtime.codegen_cache import CompiledCodeCache
 from deploy.runtime.process_executor import ProcessExecutor
 from drivers.robot_descriptions import srb_parameters
+
+GENERIC_SUFFIX = "/generic-blas"  # label of the rows on CasADi's generic BLASFEO
 
 
 @dataclass
@@ -126,12 +130,16 @@ def _row(mode: str, agents: int, solver: str, variables: int, result: ClosedLoop
                     float(np.mean(result.success)), float(np.min(result.min_h_m)))
 
 
-def run_bench(agent_counts: list[int], solver: str, duration_s: float, parallel: bool,
+def run_bench(agent_counts: list[int], solvers: list[str], duration_s: float, parallel: bool,
               include_reference: bool, compiled: bool = True, log=print,
               base_settings: MpcSettings | None = None
-              ) -> tuple[list[BenchRow], list[AccuracyCheck]]:
+              ) -> tuple[list[BenchRow], list[AccuracyCheck], list[RtiFidelity]]:
+    """Per team size: centralized and distributed rows of every solver, today's fatrop path
+    (CasADi's generic BLASFEO, process executor) and ipopt-reference, in this one run; for
+    ``rti``, its closed-loop distance from converged solves at the first team size."""
     rows = []
     checks = []
+    fidelity = []
     cache = CompiledCodeCache()
     kernels = cache.blas_kernels()
     log(f"  BLAS kernels under fatrop/hpipm: BLASFEO {kernels.target}"
@@ -139,17 +147,19 @@ def run_bench(agent_counts: list[int], solver: str, duration_s: float, parallel:
     for agents in agent_counts:
         scenario = standard_scenario(agents, srb_parameters)
         team = scenario.team
-        configs = [("centralized", solver, cache), ("distributed", solver, cache)]
-        if parallel and compiled and kernels.optimized:
+        configs = []
+        for solver in solvers:
+            configs += [("centralized", solver, cache), ("distributed", solver, cache)]
+        if "fatrop" in solvers and parallel and compiled and kernels.optimized:
             # Today's fatrop path in the same run: workers on CasADi's generic BLASFEO.
-            configs.append(("distributed", solver, CompiledCodeCache(blas_target="generic")))
+            configs.append(("distributed", "fatrop", CompiledCodeCache(blas_target="generic")))
         if include_reference:
             configs.append(("distributed", "ipopt-reference", cache))
         for mode, name, row_cache in configs:
             base = base_settings or MpcSettings()
             settings = base.model_copy(update={"solver": base.solver.model_copy(
                 update={"name": name, "compiled": compiled})})
-            label = name if row_cache is cache else f"{name}/generic-blas"
+            label = name if row_cache is cache else f"{name}{GENERIC_SUFFIX}"
             log(f"  {agents} agents, {mode}, {label}: building (compiled code is cached)...")
             controller: CentralizedMpc | DistributedMpc
             if mode == "centralized":
@@ -176,39 +186,45 @@ def run_bench(agent_counts: list[int], solver: str, duration_s: float, parallel:
             log(f"    median update {row.update_ms['median']:.2f} ms, "
                 f"success {row.success_rate:.0%}, min h {row.min_h_m:.3f} m")
             rows.append(row)
-    return rows, checks
+        if "rti" in solvers and agents == agent_counts[0]:
+            base = base_settings or MpcSettings()
+            rti = base.model_copy(update={"solver": base.solver.model_copy(
+                update={"name": "rti", "compiled": compiled})})
+            log(f"  {agents} agents, rti against converged fatrop, serial...")
+            fidelity.append(rti_fidelity(agents, rti, cache, duration_s))
+    return rows, checks, fidelity
 
 
 def format_table(rows: list[BenchRow]) -> str:
     """Table I layout plus local NLP time and the ratios measured in this run."""
     header = (f"{'n_A':>3} {'mode':<12} {'solver':<20} {'vars':>5} {'iters':>6} "
               f"{'upd mean':>9} {'std':>6} {'median':>7} {'p95':>7} {'cpu med':>7} "
-              f"{'local med':>9} {'dist/cent':>9} {'ref/this':>8} {'generic/this':>12}")
+              f"{'local med':>9} {'dist/cent':>9} {'ref/this':>8} {'today/this':>10}")
     lines = [header, "-" * len(header)]
     for row in rows:
         cent = next((r for r in rows if r.agents == row.agents and r.mode == "centralized"
                      and r.solver == row.solver), None)
         ref = next((r for r in rows if r.agents == row.agents and r.mode == "distributed"
                     and r.solver == "ipopt-reference"), None)
-        generic = next((r for r in rows if r.agents == row.agents and r.mode == "distributed"
-                        and r.solver.endswith("/generic-blas")), None)
+        today = next((r for r in rows if r.agents == row.agents and r.mode == "distributed"
+                      and r.solver == f"fatrop{GENERIC_SUFFIX}"), None)
         ratio = (f"{row.update_ms['mean'] / cent.update_ms['mean']:.2f}"
                  if row.mode == "distributed" and cent else "")
         speedup = (f"{ref.local_ms['median'] / row.local_ms['median']:.1f}x"  # type: ignore[index]
                    if row.local_ms and ref and ref is not row else "")
-        cheaper = (f"{generic.local_ms['median'] / row.local_ms['median']:.2f}x"  # type: ignore[index]
-                   if row.local_ms and generic and generic is not row else "")
+        cheaper = (f"{today.local_ms['median'] / row.local_ms['median']:.2f}x"  # type: ignore[index]
+                   if row.local_ms and today and today is not row else "")
         local = f"{row.local_ms['median']:.2f}" if row.local_ms else ""
         u = row.update_ms
         lines.append(f"{row.agents:>3} {row.mode:<12} {row.solver:<20} {row.variables:>5} "
                      f"{row.iterations_mean:>6.1f} {u['mean']:>9.2f} {u['std']:>6.2f} "
                      f"{u['median']:>7.2f} {u['p95']:>7.2f} {row.cpu_ms['median']:>7.2f} "
-                     f"{local:>9} {ratio:>9} {speedup:>8} {cheaper:>12}")
+                     f"{local:>9} {ratio:>9} {speedup:>8} {cheaper:>10}")
     lines.append("times in ms; 'cpu med' = median CPU time per update summed over the processes "
                  "(ADMM workers included); 'ref/this' = ipopt-reference local NLP median / this "
-                 "local NLP median; 'dist/cent' = mean update-time ratio; 'generic/this' = "
-                 "local NLP median on CasADi's generic BLASFEO (today's fatrop path, same run) / "
-                 "this local NLP median")
+                 "local NLP median; 'dist/cent' = mean update-time ratio against the same solver's "
+                 "centralized row; 'today/this' = local NLP median of today's fatrop path "
+                 "(CasADi's generic BLASFEO, same run) / this local NLP median")
     return "\n".join(lines)
 
 
@@ -222,6 +238,18 @@ def format_accuracy(checks: list[AccuracyCheck]) -> str:
     return "\n".join(lines)
 
 
-def write_json(rows: list[BenchRow], checks: list[AccuracyCheck], path: Path) -> None:
+def format_fidelity(figures: list[RtiFidelity]) -> str:
+    lines = ["rti in closed loop vs converged fatrop from the same request (first-stage GRF):"]
+    for f in figures:
+        lines.append(f"  {f.agents} agents: {f.solves} warm local solves, |dGRF| median "
+                     f"{f.median_n:.3f} N, p95 {f.p95_n:.3f} N, max {f.max_n:.3f} N "
+                     f"({f.converged_failures} left out: fatrop did not converge)")
+    return "\n".join(lines)
+
+
+def write_json(rows: list[BenchRow], checks: list[AccuracyCheck], path: Path,
+               fidelity: list[RtiFidelity] | None = None) -> None:
     path.write_text(json.dumps({"rows": [r.as_dict() for r in rows],
-                                "accuracy": [c.__dict__ for c in checks]}, indent=2))
+                                "accuracy": [c.__dict__ for c in checks],
+                                "rti_fidelity": [f.__dict__ for f in fidelity or []]},
+                               indent=2))

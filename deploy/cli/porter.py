@@ -21,19 +21,27 @@ def mpc_settings(args: argparse.Namespace) -> MpcSettings:
 
 
 def _bench_nmpc(args: argparse.Namespace) -> int:
-    from deploy.bench.nmpc import format_accuracy, format_table, run_bench, write_json
+    from deploy.bench.nmpc import (
+        format_accuracy,
+        format_fidelity,
+        format_table,
+        run_bench,
+        write_json,
+    )
 
-    print(f"porter bench nmpc: agents {args.agents}, solver {args.solver}, "
+    print(f"porter bench nmpc: agents {args.agents}, solvers {', '.join(args.solvers)}, "
           f"{args.duration} s closed loop each, {'process' if args.parallel else 'serial'} "
           "executor")
-    rows, checks = run_bench(args.agents, args.solver, args.duration, args.parallel,
-                             not args.no_reference, compiled=not args.interpreted,
-                             base_settings=mpc_settings(args))
+    rows, checks, fidelity = run_bench(
+        args.agents, args.solvers, args.duration, args.parallel, not args.no_reference,
+        compiled=not args.interpreted, base_settings=mpc_settings(args))
     print(format_table(rows))
     if checks:
         print(format_accuracy(checks))
+    if fidelity:
+        print(format_fidelity(fidelity))
     if args.json:
-        write_json(rows, checks, Path(args.json))
+        write_json(rows, checks, Path(args.json), fidelity)
         print(f"wrote {args.json}")
     return 0
 
@@ -152,7 +160,9 @@ def build_parser() -> argparse.ArgumentParser:
     bench_kinds = bench.add_subparsers(dest="bench", required=True)
     nmpc = bench_kinds.add_parser("nmpc", help="centralized vs ADMM NMPC update times")
     nmpc.add_argument("--agents", type=int, nargs="+", default=[2, 3, 4])
-    nmpc.add_argument("--solver", default="fatrop", choices=["fatrop", "ipopt"])
+    nmpc.add_argument("--solvers", nargs="+", default=["fatrop", "rti"],
+                      choices=["fatrop", "rti", "ipopt"],
+                      help="solvers with centralized and distributed rows")
     nmpc.add_argument("--duration", type=float, default=6.0, help="closed-loop seconds per row")
     nmpc.add_argument("--serial", dest="parallel", action="store_false",
                       help="run ADMM local solves serially instead of one process per agent")

@@ -9,6 +9,7 @@ from pathlib import Path
 import numpy as np
 import pytest
 
+from core.model.obstacles import Obstacle
 from core.nmpc.nlp_solver import NlpSolver
 from core.nmpc.settings import MpcSettings, SafetySettings, SolverSettings
 from core.nmpc.transport_problem import build_transport_problem
@@ -30,10 +31,11 @@ class CountingCache(CompiledCodeCache):
         return super().library_for(name, key, counted)
 
 
-@pytest.mark.parametrize("solver", ["fatrop", "ipopt"])
+@pytest.mark.parametrize("solver", ["fatrop", "rti", "ipopt"])
 def test_compiled_matches_interpreted_and_is_cached(tmp_path: Path, solver: str) -> None:
     mpc = MpcSettings(horizon_steps=2, safety=SafetySettings(max_obstacles=0),
-                      solver=SolverSettings(name=solver, tolerance=1e-8))  # type: ignore[arg-type]
+                      solver=SolverSettings(name=solver, tolerance=1e-8,  # type: ignore[arg-type]
+                                                sqp_steps=20))
     model = team(("go2",))
     problem = build_transport_problem(mpc, agent_count=1)
     inputs = inputs_at_start(model, mpc)
@@ -64,3 +66,39 @@ def test_reference_configuration_is_never_compiled(tmp_path: Path) -> None:
     cache = CountingCache(tmp_path)
     assert not NlpSolver(problem.nlp, mpc.solver, cache).compiled
     assert cache.generated == 0
+
+
+def test_rti_iterated_converges_to_the_interior_point_solution() -> None:
+    """The real-time-iteration path (SQP steps on HPIPM's stage-wise QP) on one fixed local
+    problem with an obstacle near a robot: from a cold start it iterates to fatrop's optimum;
+    warm, it takes one step, which already moves most of the way there."""
+    model = team(("go2", "go2"))
+    base = MpcSettings(horizon_steps=4, safety=SafetySettings(max_obstacles=1, obstacle_slots=1))
+    problem = build_transport_problem(base, agent_count=2, local=True)
+    # An obstacle ahead of the front robot, 5 cm outside its margin.
+    obstacle = Obstacle((1.3, 0.05), (0.0, 0.0), 0.1)
+    inputs = inputs_at_start(model, base, [obstacle])
+    assert 0 < np.min(inputs.safety_values()) < 0.1
+    guess = initial_guess(problem, model, inputs, None, agent=0)
+    args = (guess, problem.parameter_vector(
+        model, inputs, agent=0, consensus_target=problem.shared_trajectory(guess)),
+        *problem.decision_bounds(inputs.contacts, agent=0))
+
+    def solver(name: str, tolerance: float = 1e-8) -> NlpSolver:
+        return NlpSolver(problem.nlp, SolverSettings(  # type: ignore[arg-type]
+            name=name, compiled=False, tolerance=tolerance))
+
+    exact = solver("fatrop", tolerance=1e-6).solve(*args, warm_start=False)
+    rti = solver("rti")
+    converged = rti.solve(*args, warm_start=False)
+    one_step = rti.solve(*args)
+    assert exact.stats.success and converged.stats.success and one_step.stats.success
+    # Converged: by its tolerance, or by a step too small to move (kernel-dependent).
+    assert converged.stats.status in ("Solve_Succeeded", "Search_Direction_Becomes_Too_Small")
+    assert 1 < converged.stats.iterations < 50
+    assert one_step.stats.iterations == 1
+    assert converged.stats.constraint_violation < 1e-6
+    np.testing.assert_allclose(converged.decision, exact.decision, atol=1e-3)
+    assert converged.stats.objective == pytest.approx(exact.stats.objective, rel=1e-5)
+    distance = np.linalg.norm(one_step.decision - exact.decision)
+    assert distance < 0.05 * np.linalg.norm(guess - exact.decision)

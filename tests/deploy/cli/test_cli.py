@@ -20,11 +20,15 @@ def test_bench_nmpc_writes_table_and_json(tmp_path: Path, capsys: pytest.Capture
     assert "dist/cent" in printed and "ipopt-reference" in printed and "cpu med" in printed
     figures = json.loads(out.read_text())
     rows = figures["rows"]
-    (check,) = figures["accuracy"]
-    assert check["agents"] == 2 and check["samples"] >= 1
-    assert 0 <= check["max_grf_difference_n"] < 50
+    assert [c["solver"] for c in figures["accuracy"]] == ["fatrop", "rti"]
+    for check in figures["accuracy"]:
+        assert check["agents"] == 2 and check["samples"] >= 1
+        assert 0 <= check["max_grf_difference_n"] < 50
+    (fidelity,) = figures["rti_fidelity"]
+    assert fidelity["solves"] >= 1 and 0 <= fidelity["median_n"] <= fidelity["max_n"]
     keys = {(r["mode"], r["agents"], r["solver"]) for r in rows}
     assert keys == {("centralized", 2, "fatrop"), ("distributed", 2, "fatrop"),
+                    ("centralized", 2, "rti"), ("distributed", 2, "rti"),
                     ("distributed", 2, "ipopt-reference")}
     for row in rows:
         assert row["variables"] == (612 if row["mode"] == "centralized" else 408)

@@ -98,10 +98,6 @@ def test_deploy_on_the_sim_backend_stands_walks_carries_and_sits_down(
 
 
 @pytest.mark.slow
-@pytest.mark.xfail(strict=False, reason=(
-    "known failure, left open: near obstacle 0 the fatrop local solves of robot 1 hit their "
-    "iteration limit on 4+ consecutive updates and the supervisor stops the team (seen at "
-    "5 s and at 12 s into RUNNING); infeasible plans are the subject of the next issue"))
 def test_the_mixed_team_completes_the_full_scenario(tmp_path: Path) -> None:
     """Two Go2 + one A1 over the whole scenario: completes, sits down, reaches the goal."""
     config = CONFIG_DIR / "two_go2_a1.yaml"

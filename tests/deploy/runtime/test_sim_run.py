@@ -91,17 +91,10 @@ def test_delay_compensation_keeps_tracking_close_to_the_lockstep_run() -> None:
     assert delayed["max_coupling_error_m"] < 0.002
 
 
-# four_go2: with the safety supervisor running in simulation (issue 12) the run safe-stops at
-# 3.67 s on 4 consecutive failed NMPC updates near obstacle 0 (before, 73 failed solves were
-# executed silently and the team reached the goal); the infeasible-plan work of issue 14 (CBF
-# slack, braking backup) is what makes it pass again.
-_SAFE_STOPS = {"four_go2": "safe stop: NMPC solver failed 4 consecutive updates (issue 14)"}
-
-
+# four_go2 safe-stopped here under fatrop (4 consecutive failed updates near obstacle 0); with
+# the rti solver (the default since) it completes with no failed solve.
 @pytest.mark.slow
-@pytest.mark.parametrize("name", [
-    pytest.param(name, marks=pytest.mark.xfail(reason=_SAFE_STOPS[name], strict=False))
-    if name in _SAFE_STOPS else name for name in shipped_scenarios()])
+@pytest.mark.parametrize("name", shipped_scenarios())
 def test_shipped_scenario_reaches_the_goal_safely(name: str) -> None:
     scenario = load_scenario(name)
     loop = SimRun(scenario, CompiledCodeCache())
