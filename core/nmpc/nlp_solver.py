@@ -115,6 +115,8 @@ class NlpSolver:
                              if cold != options else None)
         self._lbg = problem.lower_constraints
         self._ubg = problem.upper_constraints
+        # Converted once: a numpy -> DM conversion costs ~0.1 ms per vector and call.
+        self._lbg_dm, self._ubg_dm = ca.DM(self._lbg), ca.DM(self._ubg)
         self._warm_duals = settings.name != "ipopt-reference"
 
     def _options(self) -> tuple[str, dict]:
@@ -235,9 +237,9 @@ class NlpSolver:
         constraint_multipliers: np.ndarray | None,
         bound_multipliers: np.ndarray | None,
     ) -> NlpSolution:
-        args = {
+        args: dict[str, np.ndarray | ca.DM] = {
             "x0": initial_guess, "p": parameters, "lbx": lower_bounds, "ubx": upper_bounds,
-            "lbg": self._lbg, "ubg": self._ubg,
+            "lbg": self._lbg_dm, "ubg": self._ubg_dm,
         }
         if self._warm_duals and constraint_multipliers is not None:
             args["lam_g0"] = constraint_multipliers
@@ -256,8 +258,8 @@ class NlpSolver:
             stats = SolveStats(f"error: {failure}", False, 0, wall, float("nan"), float("inf"),
                                cpu)
             return NlpSolution(np.array(initial_guess, float), np.zeros(m), np.zeros(n), stats)
-        x = np.asarray(result["x"]).ravel()
-        g = np.asarray(result["g"]).ravel()
+        x = _vector(result["x"])
+        g = _vector(result["g"])
         violation = float(max(
             np.max(np.maximum(g - self._ubg, 0.0), initial=0.0),
             np.max(np.maximum(self._lbg - g, 0.0), initial=0.0),
@@ -283,5 +285,10 @@ class NlpSolver:
             cpu_time_s=cpu,
         )
         return NlpSolution(
-            x, np.asarray(result["lam_g"]).ravel(), np.asarray(result["lam_x"]).ravel(), stats
+            x, _vector(result["lam_g"]), _vector(result["lam_x"]), stats
         )
+
+
+def _vector(value: ca.DM) -> np.ndarray:
+    """A dense CasADi column as a flat float array (half the time of ``np.asarray``)."""
+    return np.fromiter(value.elements(), dtype=float, count=value.numel())
