@@ -1,6 +1,6 @@
 """Build-once, solve-many NLP solvers over a stage-wise ``NlpProblem``.
 
-Three configurations (``SolverSettings.name``):
+Four configurations (``SolverSettings.name``):
 
 * ``fatrop``: structure-exploiting interior point (shipped with CasADi), stage structure given
   explicitly, derivatives code-generated and compiled when a compiler is supplied.
