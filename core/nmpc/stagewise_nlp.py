@@ -4,6 +4,7 @@ stage, as structure-exploiting solvers (fatrop) need, and as any general NLP sol
 from __future__ import annotations
 
 from dataclasses import dataclass, field
+from functools import cached_property
 
 import casadi as ca
 import numpy as np
@@ -41,6 +42,16 @@ class NlpProblem:
     def variable_count(self) -> int:
         return self.decision.size
 
+    @cached_property
+    def decision_shift(self) -> np.ndarray:
+        """Index map moving every decision block one stage earlier (see ``stage_shift_index``)."""
+        return stage_shift_index(self.decision.offsets, self.decision.size)
+
+    @cached_property
+    def constraint_shift(self) -> np.ndarray:
+        """Index map moving every constraint block one stage earlier."""
+        return stage_shift_index(self.constraint_blocks, self.lower_constraints.size)
+
     def casadi_dict(self) -> dict[str, ca.SX]:
         return {
             "x": self.decision.vector(),
@@ -48,6 +59,24 @@ class NlpProblem:
             "f": self.objective,
             "g": self.constraints,
         }
+
+
+def stage_shift_index(blocks: dict[str, tuple[int, int]], size: int) -> np.ndarray:
+    """Index map ``values[index]`` of ``size`` entries laid out in ``<block>@<stage>`` blocks:
+    each block takes the next stage's values, a block's last stage is repeated, and a block
+    that exists at one stage only (the initial condition) or entries outside every block keep
+    their own."""
+    last: dict[str, int] = {}
+    for name in blocks:
+        base, stage = name.rsplit("@", 1)
+        last[base] = max(last.get(base, 0), int(stage))
+    index = np.arange(size)
+    for name, (start, rows) in blocks.items():
+        base, stage = name.rsplit("@", 1)
+        source_start, source_rows = blocks[f"{base}@{min(int(stage) + 1, last[base])}"]
+        if source_rows == rows:
+            index[start : start + rows] = np.arange(source_start, source_start + rows)
+    return index
 
 
 @dataclass

@@ -17,6 +17,7 @@ from core.model.team import TeamModel
 from core.nmpc.layout import BlockLayout
 from core.nmpc.mpc_inputs import MpcInputs
 from core.nmpc.nlp_solver import NlpSolution
+from core.nmpc.stagewise_nlp import stage_shift_index
 from core.nmpc.transport_problem import TransportProblem
 
 
@@ -25,34 +26,7 @@ def shift_blocks(offsets: dict[str, tuple[int, int]], values: np.ndarray) -> np.
     a block's last stage is repeated, and a block that exists at one stage only (the initial
     condition) keeps its value."""
     source = np.asarray(values, dtype=float)
-    index = _shift_index(offsets)
-    if index.size < source.size:  # entries outside every block keep their value
-        index = np.concatenate([index, np.arange(index.size, source.size)])
-    return source[index]
-
-
-# Index maps of shift_blocks per layout (a problem's layouts only grow while it is built, so a
-# map is rebuilt when the block count changed); parsing block names on every update cost ~1 ms.
-_SHIFT_INDEX: dict[int, tuple[dict[str, tuple[int, int]], int, np.ndarray]] = {}
-
-
-def _shift_index(offsets: dict[str, tuple[int, int]]) -> np.ndarray:
-    cached = _SHIFT_INDEX.get(id(offsets))
-    if cached is not None and cached[0] is offsets and cached[1] == len(offsets):
-        return cached[2]
-    last: dict[str, int] = {}
-    for name in offsets:
-        base, stage = name.rsplit("@", 1)
-        last[base] = max(last.get(base, 0), int(stage))
-    size_total = max((start + size for start, size in offsets.values()), default=0)
-    index = np.arange(size_total)
-    for name, (start, size) in offsets.items():
-        base, stage = name.rsplit("@", 1)
-        source_start, source_size = offsets[f"{base}@{min(int(stage) + 1, last[base])}"]
-        if source_size == size:
-            index[start : start + size] = np.arange(source_start, source_start + size)
-    _SHIFT_INDEX[id(offsets)] = (offsets, len(offsets), index)
-    return index
+    return source[stage_shift_index(offsets, source.size)]
 
 
 def shift_solution(layout: BlockLayout, horizon_steps: int, solution: np.ndarray) -> np.ndarray:
@@ -64,9 +38,9 @@ def shift_solution(layout: BlockLayout, horizon_steps: int, solution: np.ndarray
 def shifted_multipliers(problem: TransportProblem, previous: NlpSolution
                         ) -> tuple[np.ndarray, np.ndarray]:
     """(constraint, bound) multipliers of ``previous`` moved one stage earlier with the same
-    stage map as the primal warm start (``shift_solution``)."""
-    return (shift_blocks(problem.nlp.constraint_blocks, previous.constraint_multipliers),
-            shift_blocks(problem.nlp.decision.offsets, previous.bound_multipliers))
+    stage map as the primal warm start (the problem's index maps, built once)."""
+    return (np.asarray(previous.constraint_multipliers, float)[problem.nlp.constraint_shift],
+            np.asarray(previous.bound_multipliers, float)[problem.nlp.decision_shift])
 
 
 def nominal_foot_forces(contacts: np.ndarray, supported_mass_kg: float, gravity_m_s2: float
@@ -115,7 +89,7 @@ def initial_guess(
     g = problem.settings.gravity_m_s2
     payload_share_kg = team.payload.mass_kg / team.agent_count
     if previous is not None:
-        guess = shift_solution(layout, n, previous.decision)
+        guess = np.asarray(previous.decision, float)[problem.nlp.decision_shift]
     else:
         guess = np.zeros(layout.size)
         for k in range(n + 1):

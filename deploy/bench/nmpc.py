@@ -130,6 +130,13 @@ def _row(mode: str, agents: int, solver: str, variables: int, result: ClosedLoop
                     float(np.mean(result.success)), float(np.min(result.min_h_m)))
 
 
+def _with_solver(base: MpcSettings | None, name: str, compiled: bool) -> MpcSettings:
+    """``base`` (or the defaults) with solver ``name``, compiled or not."""
+    base = base or MpcSettings()
+    return base.model_copy(update={"solver": base.solver.model_copy(
+        update={"name": name, "compiled": compiled})})
+
+
 def run_bench(agent_counts: list[int], solvers: list[str], duration_s: float, parallel: bool,
               include_reference: bool, compiled: bool = True, log=print,
               base_settings: MpcSettings | None = None
@@ -156,9 +163,7 @@ def run_bench(agent_counts: list[int], solvers: list[str], duration_s: float, pa
         if include_reference:
             configs.append(("distributed", "ipopt-reference", cache))
         for mode, name, row_cache in configs:
-            base = base_settings or MpcSettings()
-            settings = base.model_copy(update={"solver": base.solver.model_copy(
-                update={"name": name, "compiled": compiled})})
+            settings = _with_solver(base_settings, name, compiled)
             label = name if row_cache is cache else f"{name}{GENERIC_SUFFIX}"
             log(f"  {agents} agents, {mode}, {label}: building (compiled code is cached)...")
             controller: CentralizedMpc | DistributedMpc
@@ -187,11 +192,9 @@ def run_bench(agent_counts: list[int], solvers: list[str], duration_s: float, pa
                 f"success {row.success_rate:.0%}, min h {row.min_h_m:.3f} m")
             rows.append(row)
         if "rti" in solvers and agents == agent_counts[0]:
-            base = base_settings or MpcSettings()
-            rti = base.model_copy(update={"solver": base.solver.model_copy(
-                update={"name": "rti", "compiled": compiled})})
             log(f"  {agents} agents, rti against converged fatrop, serial...")
-            fidelity.append(rti_fidelity(agents, rti, cache, duration_s))
+            fidelity.append(rti_fidelity(agents, _with_solver(base_settings, "rti", compiled),
+                                         cache, duration_s))
     return rows, checks, fidelity
 
 
