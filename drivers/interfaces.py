@@ -21,6 +21,9 @@ import numpy as np
 
 from core.model.conventions import JOINT_COUNT
 
+_COMMAND_FIELDS = ("torque_nm", "position_rad", "velocity_rad_s", "kp", "kd")
+_JOINT_SHAPE = (JOINT_COUNT,)
+
 
 def _zeros_12() -> np.ndarray:
     return np.zeros(JOINT_COUNT)
@@ -43,9 +46,15 @@ class JointCommand:
     kd: np.ndarray = field(default_factory=_zeros_12)
 
     def __post_init__(self) -> None:
-        for name in ("torque_nm", "position_rad", "velocity_rad_s", "kp", "kd"):
-            value = np.broadcast_to(np.asarray(getattr(self, name), dtype=float), (JOINT_COUNT,))
-            setattr(self, name, value.copy())
+        for name in _COMMAND_FIELDS:
+            value = getattr(self, name)
+            # Fast path (every tick builds several): already a float (12,) array, copied so
+            # the command owns its data.
+            if type(value) is np.ndarray and value.shape == _JOINT_SHAPE and value.dtype == float:
+                setattr(self, name, value.copy())
+            else:
+                setattr(self, name, np.broadcast_to(np.asarray(value, dtype=float),
+                                                    _JOINT_SHAPE).copy())
 
     @classmethod
     def hold(cls, position_rad: np.ndarray, kp: float, kd: float) -> JointCommand:

@@ -101,6 +101,19 @@ class WbcOutput:
     solve_time_s: float
 
 
+@dataclass(frozen=True)
+class _QpLayout:
+    """The parts of the QP that depend only on the number of stance feet: the constant
+    Hessian (regularization, base and force task weights), the constraint matrix with its
+    friction rows filled, the constant bounds and the constraint senses. Copied per tick."""
+
+    hessian: np.ndarray
+    constraint: np.ndarray
+    upper: np.ndarray
+    lower: np.ndarray
+    sense: np.ndarray
+
+
 class WholeBodyController:
     """WBC of one robot, built once per robot from its Pinocchio model.
 
@@ -129,22 +142,29 @@ class WholeBodyController:
         self._kd_rot = np.array(s.base_angular_velocity_gain)
         self._last: WbcOutput | None = None
         self._lower = np.tril_indices(model.nv, -1)
+        self._layouts = [self._build_layout(stance_count) for stance_count in range(5)]
+        self._zero_acceleration = np.zeros(model.nv)
+        # (state, q, v, rotation) whose rigid-body terms the Pinocchio data holds (``observe``)
+        self._observed: tuple[FloatingBaseState, np.ndarray, np.ndarray, np.ndarray] | None = None
 
     # --- state conversions ---------------------------------------------------------------
-    def pinocchio_state(self, state: FloatingBaseState) -> tuple[np.ndarray, np.ndarray]:
-        """(q, v) in Pinocchio's convention (quaternion xyzw, base twist in the base frame)."""
+    def pinocchio_state(self, state: FloatingBaseState, rotation: np.ndarray | None = None
+                        ) -> tuple[np.ndarray, np.ndarray]:
+        """(q, v) in Pinocchio's convention (quaternion xyzw, base twist in the base frame);
+        ``rotation``: the state's base rotation when already at hand."""
         w, x, y, z = state.quaternion_wxyz
-        rotation = state.rotation()
+        rotation = state.rotation() if rotation is None else rotation
         q = np.concatenate([state.position_base_in_world_m, (x, y, z, w),
                             state.joint_position_rad])
         v = np.concatenate([rotation.T @ state.linear_velocity_in_world_m_s,
                             state.angular_velocity_in_body_rad_s, state.joint_velocity_rad_s])
         return q, v
 
-    def srb_state(self, state: FloatingBaseState) -> np.ndarray:
+    def srb_state(self, state: FloatingBaseState, rotation: np.ndarray | None = None
+                  ) -> np.ndarray:
         """The NMPC's SRB state (p, v, Theta, omega) of this robot: CoM at the standing offset
         from the base, omega in world."""
-        rotation = state.rotation()
+        rotation = state.rotation() if rotation is None else rotation
         offset = rotation @ self.com_offset_in_base_m
         omega = rotation @ state.angular_velocity_in_body_rad_s
         return np.concatenate([state.position_base_in_world_m + offset,
@@ -153,11 +173,26 @@ class WholeBodyController:
 
     def foot_positions(self, state: FloatingBaseState) -> np.ndarray:
         """(4, 3) foot contact points [m] in world (foot frame minus the foot radius in z)."""
+        self._observed = None  # the Pinocchio data no longer holds an observed state's terms
         q, _ = self.pinocchio_state(state)
         pin.framesForwardKinematics(self.model, self.data, q)
+        return self._feet()
+
+    def _feet(self) -> np.ndarray:
         feet = np.array([self.data.oMf[i].translation for i in self.foot_frame_ids])
         feet[:, 2] -= self.foot_radius_m
         return feet
+
+    def observe(self, state: FloatingBaseState) -> tuple[np.ndarray, np.ndarray]:
+        """``srb_state`` and ``foot_positions`` of ``state`` from one Pinocchio pass, whose
+        rigid-body terms the next ``compute`` on this same state object reuses (one pass per
+        robot and tick instead of three)."""
+        rotation = state.rotation()
+        q, v = self.pinocchio_state(state, rotation)
+        pin.computeAllTerms(self.model, self.data, q, v)
+        pin.updateFramePlacements(self.model, self.data)
+        self._observed = (state, q, v, rotation)
+        return self.srb_state(state, rotation), self._feet()
 
     # --- control -------------------------------------------------------------------------
     def compute(self, state: FloatingBaseState, target: WbcTarget) -> WbcOutput:
@@ -165,13 +200,17 @@ class WholeBodyController:
         start = time.perf_counter()
         s = self.settings
         model, data = self.model, self.data
-        q, v = self.pinocchio_state(state)
-        pin.computeAllTerms(model, data, q, v)
+        observed, self._observed = self._observed, None
+        if observed is not None and observed[0] is state:
+            _, q, v, rotation = observed
+        else:
+            rotation = state.rotation()
+            q, v = self.pinocchio_state(state, rotation)
+            pin.computeAllTerms(model, data, q, v)
         mass = np.array(data.M)  # Pinocchio fills the upper triangle; mirror it
         mass[self._lower] = mass.T[self._lower]
         bias = np.array(data.nle)
-        pin.forwardKinematics(model, data, q, v, np.zeros(model.nv))  # data.a = Jdot v
-        rotation = state.rotation()
+        pin.forwardKinematics(model, data, q, v, self._zero_acceleration)  # data.a = Jdot v
         world = pin.ReferenceFrame.LOCAL_WORLD_ALIGNED
         jacobians = [pin.getFrameJacobian(model, data, i, world)[0:3] for i in self.foot_frame_ids]
         drifts = [pin.getFrameClassicalAcceleration(model, data, i, world).linear
@@ -180,76 +219,54 @@ class WholeBodyController:
         swing = [leg for leg in range(4) if leg not in stance]
         nf = 3 * len(stance)
         n = nf + model.nv
+        layout = self._layouts[len(stance)]
 
-        # Cost 0.5 x'Hx + g'x as a sum of weighted least-squares terms.
-        hessian = s.regularization * np.eye(n)
+        # Cost 0.5 x'Hx + g'x as a sum of weighted least-squares terms; each task's rows are
+        # a block of x (base: qdd_base; swing: J qdd; forces: f), so only that block is added.
+        hessian = layout.hessian.copy()
         gradient = np.zeros(n)
-
-        def add_task(rows: np.ndarray, value: np.ndarray, weight: float) -> None:
-            nonlocal gradient
-            hessian[:] += weight * rows.T @ rows
-            gradient = gradient - weight * rows.T @ value
-
-        base_rows = np.zeros((6, n))
-        base_rows[:, nf:nf + 6] = np.eye(6)
-        add_task(base_rows, self._base_acceleration(state, target, rotation, v), s.base_weight)
-        feet_now = np.array([data.oMi[model.frames[i].parentJoint].act(
-            model.frames[i].placement).translation for i in self.foot_frame_ids])
+        gradient[nf:nf + 6] -= s.base_weight * self._base_acceleration(state, target, rotation, v)
+        pin.updateFramePlacements(model, data)
         for leg in swing:
-            rows = np.zeros((3, n))
-            rows[:, nf:] = jacobians[leg]
-            velocity = jacobians[leg] @ v
+            jacobian = jacobians[leg]
+            velocity = jacobian @ v
+            foot_now = data.oMf[self.foot_frame_ids[leg]].translation
             desired = (target.foot_acceleration_m_s2[leg]
                        + s.swing_position_gain * (target.foot_position_m[leg]
-                                                  + (0, 0, self.foot_radius_m) - feet_now[leg])
+                                                  + (0, 0, self.foot_radius_m) - foot_now)
                        + s.swing_velocity_gain * (target.foot_velocity_m_s[leg] - velocity))
-            add_task(rows, desired - drifts[leg], s.swing_weight)
+            weighted = s.swing_weight * jacobian.T
+            hessian[nf:, nf:] += weighted @ jacobian
+            gradient[nf:] -= weighted @ (desired - drifts[leg])
         if nf:
-            force_rows = np.zeros((nf, n))
-            force_rows[:, 0:nf] = np.eye(nf)
-            add_task(force_rows, np.asarray(target.planned_grf_n)[stance].reshape(-1),
-                     s.force_weight)
+            gradient[0:nf] -= s.force_weight * np.asarray(target.planned_grf_n)[stance].reshape(-1)
 
-        # Constraints: simple bounds on f, then friction, dynamics, stance, torque rows.
+        # Constraints (rows of ``layout``): simple bounds on f, then friction (constant),
+        # dynamics, stance, torque rows.
+        constraint, upper, lower = (layout.constraint.copy(), layout.upper.copy(),
+                                    layout.lower.copy())
         contact_jacobian = (np.vstack([jacobians[leg] for leg in stance]) if nf
                             else np.zeros((0, model.nv)))
-        rows_list, upper_list, lower_list, sense_list = [], [], [], []
-
-        def add_rows(rows: np.ndarray, lower: np.ndarray, upper: np.ndarray,
-                     equality: bool = False) -> None:
-            rows_list.append(rows)
-            lower_list.append(lower)
-            upper_list.append(upper)
-            sense_list.append(np.full(len(rows), _EQUALITY if equality else 0, dtype=np.int32))
-
-        mu = s.friction_coefficient
-        pyramid = np.array([[1.0, 0.0, -mu], [-1.0, 0.0, -mu], [0.0, 1.0, -mu], [0.0, -1.0, -mu]])
-        for k in range(len(stance)):
-            rows = np.zeros((4, n))
-            rows[:, 3 * k:3 * k + 3] = pyramid
-            add_rows(rows, np.full(4, -_INF), np.zeros(4))
-        dynamics = np.zeros((6, n))
+        row = 4 * len(stance)
+        dynamics = constraint[row:row + 6]
         dynamics[:, 0:nf] = -contact_jacobian[:, 0:6].T
         dynamics[:, nf:] = mass[0:6]
         base_force = self._coupling_generalized_force(target.wrench_on_robot, rotation)
-        add_rows(dynamics, base_force - bias[0:6], base_force - bias[0:6], equality=True)
+        bound = nf + row
+        upper[bound:bound + 6] = lower[bound:bound + 6] = base_force - bias[0:6]
+        row, bound = row + 6, bound + 6
         if nf:
-            stance_rows = np.zeros((nf, n))
-            stance_rows[:, nf:] = contact_jacobian
+            constraint[row:row + nf, nf:] = contact_jacobian
             stance_drift = np.concatenate([drifts[leg] for leg in stance])
             rhs = -stance_drift - s.stance_velocity_damping * (contact_jacobian @ v)
-            add_rows(stance_rows, rhs, rhs, equality=True)
-        torque_rows = np.zeros((JOINT_COUNT, n))
+            upper[bound:bound + nf] = lower[bound:bound + nf] = rhs
+            row, bound = row + nf, bound + nf
+        torque_rows = constraint[row:]
         torque_rows[:, 0:nf] = -contact_jacobian[:, 6:].T
         torque_rows[:, nf:] = mass[6:]
-        add_rows(torque_rows, -self.torque_limit_nm - bias[6:], self.torque_limit_nm - bias[6:])
-
-        bound_lower = np.tile([-_INF, -_INF, s.min_normal_force_n], len(stance))
-        bound_upper = np.tile([_INF, _INF, s.max_normal_force_n], len(stance))
-        constraint = np.vstack(rows_list)
-        upper = np.concatenate([bound_upper, *upper_list])
-        lower = np.concatenate([bound_lower, *lower_list])
-        sense = np.concatenate([np.zeros(nf, dtype=np.int32), *sense_list])
+        upper[bound:] = self.torque_limit_nm - bias[6:]
+        lower[bound:] = -self.torque_limit_nm - bias[6:]
+        sense = layout.sense
         x, _, status, _ = daqp.solve(hessian, gradient, constraint, upper, lower, sense)
         elapsed = time.perf_counter() - start
         if status < 1 or not np.all(np.isfinite(x)):
@@ -264,6 +281,31 @@ class WholeBodyController:
                            time.perf_counter() - start)
         self._last = output
         return output
+
+    def _build_layout(self, stance_count: int) -> _QpLayout:
+        s = self.settings
+        nv = self.model.nv
+        nf = 3 * stance_count
+        n = nf + nv
+        hessian = s.regularization * np.eye(n)
+        hessian[range(nf, nf + 6), range(nf, nf + 6)] += s.base_weight
+        hessian[range(nf), range(nf)] += s.force_weight
+        friction_rows = 4 * stance_count
+        constraint = np.zeros((friction_rows + 6 + nf + JOINT_COUNT, n))
+        mu = s.friction_coefficient
+        pyramid = np.array([[1.0, 0.0, -mu], [-1.0, 0.0, -mu], [0.0, 1.0, -mu],
+                            [0.0, -1.0, -mu]])
+        for k in range(stance_count):
+            constraint[4 * k:4 * k + 4, 3 * k:3 * k + 3] = pyramid
+        bounds = nf + len(constraint)
+        upper, lower = np.zeros(bounds), np.zeros(bounds)
+        upper[0:nf] = np.tile([_INF, _INF, s.max_normal_force_n], stance_count)
+        lower[0:nf] = np.tile([-_INF, -_INF, s.min_normal_force_n], stance_count)
+        lower[nf:nf + friction_rows] = -_INF
+        sense = np.zeros(bounds, dtype=np.int32)
+        equalities = nf + friction_rows
+        sense[equalities:equalities + 6 + nf] = _EQUALITY  # dynamics, stance feet
+        return _QpLayout(hessian, constraint, upper, lower, sense)
 
     def _failed(self, status: int, elapsed_s: float) -> WbcOutput:
         last = self._last

@@ -123,14 +123,16 @@ STAGES = ("read", "estimate", "nmpc", "check", "control", "filter", "send", "rec
 
 def format_budget(rows: list[dict[str, Any]]) -> str:
     """CPU-s per simulated second by process, and the tick's stages [ms wall, p50 / p99]."""
-    lines = [f"{'config':<12} {'scale':>5} {'porter':>6} {'workers':>7} {'world':>6} "
-             f"{'total':>6}   CPU-s per simulated s over RUNNING (workers: "
-             "porter-admm-agent*, summed)"]
+    lines = [f"{'config':<12} {'scale':>5} {'porter':>6} {'nmpc':>6} {'workers':>7} "
+             f"{'world':>6} {'total':>6}   CPU-s per simulated s over RUNNING (porter: the "
+             "loop's process; nmpc: its process; workers: the ADMM workers, summed)"]
     for row in rows:
         cpu = row.get("cpu_per_running_s") or {}
-        workers = sum(v for k, v in cpu.items() if k.startswith("porter-admm-agent"))
+        workers = sum(v for k, v in cpu.items() if k.startswith("porter-admm"))
+        nmpc = cpu.get("porter-nmpc", 0.0 if cpu else None)
         lines.append(f"{row['config']:<12} {row['time_scale']:>5.2f} "
-                     f"{_number(cpu.get('porter'), 6, 2)} {_number(workers if cpu else None, 7, 2)} "
+                     f"{_number(cpu.get('porter'), 6, 2)} {_number(nmpc, 6, 2)} "
+                     f"{_number(workers if cpu else None, 7, 2)} "
                      f"{_number(cpu.get('porter-sim-world'), 6, 2)} "
                      f"{_number(sum(cpu.values()) if cpu else None, 6, 2)}")
     lines.append("")

@@ -33,7 +33,8 @@ from deploy.runtime.controller import TeamController
 from deploy.runtime.cpu_meter import RunningCpu, cpu_seconds
 from deploy.runtime.links import TeamLinks, open_links
 from deploy.runtime.loop import ControlLoop, LoopSettings
-from deploy.runtime.nmpc_schedule import NmpcSchedule
+from deploy.runtime.nmpc_process import NmpcProcess
+from deploy.runtime.nmpc_schedule import NmpcRunner, NmpcSchedule
 from deploy.runtime.nmpc_thread import NmpcThread
 from deploy.runtime.stop_request import StopRequest
 from deploy.safety.preflight import PreflightReport, evaluate
@@ -79,13 +80,18 @@ def run_deploy(args: argparse.Namespace) -> int:
     say = lambda text: print(f"porter deploy: {text}", file=sys.stderr, flush=True)  # noqa: E731
     say(f"{config_name(args.config)}: scenario {scenario.name!r}, robots "
         f"{', '.join(config.robots)}, backend {args.backend}, run {duration_s:g} s")
-    control = TeamController(scenario, CompiledCodeCache(), tick_s=1.0 / config.rates.wbc_hz)
+    in_process = config.nmpc.runner == "process"
+    control = TeamController(scenario, CompiledCodeCache(), tick_s=1.0 / config.rates.wbc_hz,
+                             build_mpc=not in_process)
+    # Built before the world starts: a cold cache compiles the NLPs for minutes.
+    runner = (NmpcProcess(scenario, control.settings, control.cache) if in_process else None)
     backend: SimBackend | None = None
     recorder: FlightRecorder | None = None
     links = None
     loop: ControlLoop | None = None
     stop = StopRequest()
-    # The loop shares the interpreter lock with the NMPC, recorder, MoCap and CAN threads: a
+    # The loop shares the interpreter lock with the recorder, MoCap and CAN threads (and the
+    # NMPC's with ``nmpc.runner: thread``): a
     # thread that takes it keeps it up to the switch interval (5 ms by default, 2.5 WBC
     # periods) whenever the loop releases it (sleep, DDS write, BLAS); 0.2 ms bounds that wait.
     switch_interval_s = sys.getswitchinterval()
@@ -105,8 +111,10 @@ def run_deploy(args: argparse.Namespace) -> int:
             recorder = open_run_recorder(path, scenario, control.settings, control.wbc_settings,
                                          args.backend, config.recorder)
             say(f"recording to {path}")
+        if runner is not None:
+            runner.clock = clock
         loop = deploy_loop(config, control, links, recorder, OperatorPrompt(args.yes), stop,
-                           duration_s, clock, sleep)
+                           duration_s, clock, sleep, runner)
         with stop.installed():
             loop.run(f"start: porter deploy, scenario {scenario.name}")
     finally:
@@ -120,6 +128,8 @@ def run_deploy(args: argparse.Namespace) -> int:
             links.close()
         if backend is not None:
             backend.close()
+        if runner is not None:
+            runner.close()
         control.close()
     assert loop is not None and summary is not None
     if loop.report is not None and not loop.report.ok:
@@ -133,12 +143,13 @@ def deploy_loop(config: DeployConfig, control: TeamController, links: TeamLinks,
                 recorder: FlightRecorder | None, confirm: Callable[[], bool | None],
                 stop: Callable[[], bool], duration_s: float,
                 clock: Callable[[], float] = time.monotonic,
-                sleep: Callable[[float], None] = time.sleep) -> ControlLoop:
+                sleep: Callable[[float], None] = time.sleep,
+                runner: NmpcRunner | None = None) -> ControlLoop:
     """The control loop on the paced clock, through the deploy sequence (pre-flight, stand
-    up, arm, run, sit down), the NMPC in its thread."""
+    up, arm, run, sit down), the NMPC in ``runner`` (default: a thread of this process)."""
     recording = None if recorder is None else control.loop_recording(recorder)
-    nmpc = NmpcSchedule(control, NmpcThread(control, clock), config.rates.nmpc_hz, clock,
-                        recording, links.force_torque)
+    nmpc = NmpcSchedule(control, runner if runner is not None else NmpcThread(control, clock),
+                        config.rates.nmpc_hz, clock, recording, links.force_torque)
     settings = LoopSettings(config.rates, config.safety, config.posture,
                             config.preflight.timeout_s)
     loop: ControlLoop

@@ -106,6 +106,16 @@ class RatesConfig(StrictModel):
     max_plan_age_s: float = Field(0.25, gt=0)  # older active plan while running: safe stop
 
 
+class NmpcRunConfig(StrictModel):
+    """Where the NMPC runs. ``runner``: ``process``, a process of its own (off the loop's
+    interpreter lock), or ``thread``, a thread of the loop's process. ``executor``: the ADMM
+    local solves ``serial`` in the NMPC's process or one ``process`` per agent; None keeps
+    the scenario's ``controller.executor`` (a different explicit value there is an error)."""
+
+    runner: Literal["process", "thread"] = "process"
+    executor: Literal["serial", "process"] | None = None
+
+
 class PreflightConfig(StrictModel):
     timeout_s: float = Field(5.0, gt=0)  # wait this long for every link before reporting
     max_joint_velocity_rad_s: float = Field(1.0, gt=0)  # robots must be at rest
@@ -162,6 +172,7 @@ class DeployConfig(StrictModel):
     safety: SupervisorSettings = SupervisorSettings()
     posture: PostureConfig = PostureConfig()
     rates: RatesConfig = RatesConfig()
+    nmpc: NmpcRunConfig = NmpcRunConfig()
     preflight: PreflightConfig = PreflightConfig()
     recorder: RecorderSettings = RecorderSettings()
     sim: SimConfig = SimConfig()
@@ -235,6 +246,14 @@ def load_deploy_config(path_or_name: Path | str) -> tuple[DeployConfig, Scenario
     except ConfigError as error:
         raise ConfigError(f"{path}: scenario: {error} (shipped: "
                           f"{', '.join(shipped_scenarios())})") from None
+    executor = config.nmpc.executor
+    controller = scenario.controller
+    if executor is not None and executor != controller.executor:
+        if "executor" in controller.model_fields_set:
+            raise ConfigError(f"{path}: nmpc.executor: {executor!r}, but the scenario sets "
+                              f"controller.executor: {controller.executor!r}; set one of them")
+        scenario = scenario.model_copy(update={"controller": controller.model_copy(
+            update={"executor": executor})})
     team = [agent.name for agent in scenario.team]
     if sorted(config.robots) != sorted(team):
         missing = [name for name in team if name not in config.robots]

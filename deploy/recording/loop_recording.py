@@ -85,9 +85,8 @@ class LoopRecording:
             foot_target_in_world_m=fmt.as_list(foot_targets_m)), time_s)
         self._wbc_times.append(output.solve_time_s)
 
-    def nmpc_inputs(self, time_s: float, update: int, inputs: MpcInputs,
-                    memory: ControllerMemory) -> None:
-        """Before the update: its inputs, and a warm-start keyframe when one is due."""
+    def nmpc_inputs(self, time_s: float, update: int, inputs: MpcInputs) -> None:
+        """Before the update: its inputs."""
         a = fmt.array
         self.recorder.log(fmt.NMPC_INPUTS, pb.NmpcInputs(
             update=update, time_s=time_s, robot_states=a(inputs.robot_states),
@@ -95,6 +94,11 @@ class LoopRecording:
             payload_reference=a(inputs.payload_reference),
             feet_positions=a(inputs.feet_positions), contacts=a(inputs.contacts),
             obstacles=a(inputs.obstacles)), time_s)
+
+    def warm_start(self, time_s: float, update: int, memory: ControllerMemory) -> None:
+        """The warm start ``update`` (decided at ``time_s``) started from, when a keyframe is
+        due (every ``warm_start_every`` updates). Logged once the update is back, as the NMPC
+        may run in another process."""
         if update % self.recorder.settings.warm_start_every == 0:
             self.recorder.log(fmt.NMPC_WARM_START, warm_start_message(time_s, update, memory),
                               time_s)

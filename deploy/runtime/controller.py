@@ -16,7 +16,7 @@ targets, the QP's torques sent as ``tau + kd (dq + qdd dt - dq)`` with a small d
 
 from __future__ import annotations
 
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 
 import numpy as np
 
@@ -60,6 +60,10 @@ class RobotControl:
     robot_type: str
     wbc: WholeBodyController
     legs: LegCoordinator
+    joint_damping: np.ndarray = field(init=False)  # (12,) kd [N m s/rad] sent with the torques
+
+    def __post_init__(self) -> None:
+        self.joint_damping = np.full(12, self.wbc.settings.joint_damping_nm_s)
 
 
 @dataclass(frozen=True)
@@ -82,6 +86,18 @@ class WbcStep:
     output: WbcOutput
     stance: np.ndarray
     foot_targets_m: np.ndarray
+
+
+def build_team_mpc(scenario: Scenario, settings: MpcSettings, cache: CompiledCodeCache
+                   ) -> CentralizedMpc | DistributedMpc:
+    """The scenario's NMPC (centralized, or ADMM with the scenario's executor) on ``settings``
+    (``Scenario.mpc_settings``), its solvers built from ``cache``."""
+    team = TeamModel.from_settings(scenario.team_settings(), srb_parameters)
+    if scenario.controller.mode == "centralized":
+        return CentralizedMpc(team, settings, compiler=cache)
+    spec = LocalSolverSpec(settings, team.agent_count, cache)
+    executor = ProcessExecutor(spec) if scenario.controller.executor == "process" else None
+    return DistributedMpc(team, settings, executor=executor, compiler=cache)
 
 
 def measurement_state(measurement: RobotMeasurement) -> FloatingBaseState:
@@ -110,7 +126,8 @@ class TeamController:
 
     def __init__(self, scenario: Scenario, cache: CompiledCodeCache | None = None,
                  base_settings: MpcSettings | None = None,
-                 wbc_settings: WbcSettings | None = None, tick_s: float = WBC_TICK_S) -> None:
+                 wbc_settings: WbcSettings | None = None, tick_s: float = WBC_TICK_S,
+                 build_mpc: bool = True) -> None:
         self.scenario = scenario
         self.tick_s = tick_s
         self.start_s = 0.0
@@ -130,16 +147,18 @@ class TeamController:
             legs = LegCoordinator(parameters, gait, scenario.gait.swing_height_m)
             self.robots.append(RobotControl(agent.name, agent.robot_type, wbc, legs))
         self.estimator = PayloadEstimator(self.team)
-        cache = cache or CompiledCodeCache()
-        self.controller: CentralizedMpc | DistributedMpc
-        if scenario.controller.mode == "centralized":
-            self.controller = CentralizedMpc(self.team, self.settings, compiler=cache)
-        else:
-            spec = LocalSolverSpec(self.settings, self.team.agent_count, cache)
-            executor = ProcessExecutor(spec) if scenario.controller.executor == "process" else None
-            self.controller = DistributedMpc(self.team, self.settings, executor=executor,
-                                             compiler=cache)
+        self.cache = cache or CompiledCodeCache()
+        self._controller = (build_team_mpc(scenario, self.settings, self.cache) if build_mpc
+                            else None)
         self.payload_estimate: np.ndarray | None = None
+
+    @property
+    def controller(self) -> CentralizedMpc | DistributedMpc:
+        """The NMPC of this process (``build_mpc`` True; else it runs elsewhere)."""
+        if self._controller is None:
+            raise RuntimeError("this TeamController was built without its NMPC "
+                               "(build_mpc=False: the NMPC runs in another process)")
+        return self._controller
 
     @property
     def robot_names(self) -> list[str]:
@@ -155,8 +174,8 @@ class TeamController:
 
     def close(self) -> None:
         """Stop the ADMM worker processes (if any)."""
-        if isinstance(self.controller, DistributedMpc):
-            self.controller.close()
+        if isinstance(self._controller, DistributedMpc):
+            self._controller.close()
 
     def reset(self, measurements: list[RobotMeasurement], start_s: float = 0.0) -> None:
         """Standing start at ``start_s``: every leg in stance at its measured foot position."""
@@ -236,8 +255,7 @@ class TeamController:
         steps = []
         for i, (robot, measurement) in enumerate(zip(self.robots, measurements, strict=True)):
             state = measurement_state(measurement)
-            srb = robot.wbc.srb_state(state)
-            feet_now = robot.wbc.foot_positions(state)
+            srb, feet_now = robot.wbc.observe(state)
             if gait_time is None:
                 stance = np.ones(4)
                 feet = (robot.legs.planner.feet_in_world_m.copy(), np.zeros((4, 3)),
@@ -250,6 +268,6 @@ class TeamController:
             qdd_velocity = (measurement.velocity_rad_s
                             + output.joint_acceleration_rad_s2 * self.tick_s)
             command = JointCommand(torque_nm=output.torque_nm, velocity_rad_s=qdd_velocity,
-                                   kd=np.full(12, robot.wbc.settings.joint_damping_nm_s))
+                                   kd=robot.joint_damping)
             steps.append(WbcStep(command, output, stance, feet[0]))
         return steps

@@ -1,8 +1,10 @@
 """CPU time of porter's processes by role, and per simulated second while RUNNING.
 
-``cpu_seconds`` reads user + system time of this process (the loop, NMPC thread, recorder,
-MoCap and CAN threads) and of its live children by the names multiprocessing gave them
-(``porter-sim-world``, ``porter-admm-agent<i>``). ``RunningCpu`` is a loop hook taking a
+``cpu_seconds`` reads user + system time of this process (the loop, recorder, MoCap and CAN
+threads, and the NMPC thread with ``nmpc.runner: thread``) and of every live descendant: a
+child by the name multiprocessing gave it (``porter-sim-world``, ``porter-nmpc``,
+``porter-admm-agent<i>``), a grandchild by its system name (``porter-admm<i>``, the ADMM
+workers of the NMPC process, ``deploy.runtime.process_names``). ``RunningCpu`` is a loop hook taking a
 reading on the first tick of RUNNING and on the first tick after it, so the figures exclude
 start-up (imports, scene building, stand-up) and sit-down.
 """
@@ -28,8 +30,10 @@ def cpu_seconds() -> dict[str, float]:
     result = {"porter": sum(this.cpu_times()[0:2])}
     for child in this.children(recursive=True):
         with contextlib.suppress(psutil.Error):
-            result[roles.get(child.pid, f"{child.name()} {child.pid}")] = sum(
-                child.cpu_times()[0:2])
+            name = child.name()
+            role = roles.get(child.pid) or (name if name.startswith("porter")
+                                            else f"{name} {child.pid}")
+            result[role] = sum(child.cpu_times()[0:2])
     return result
 
 

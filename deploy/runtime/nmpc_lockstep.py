@@ -37,6 +37,7 @@ class LockstepNmpc:
         if self._waiting is not None:
             raise RuntimeError("NMPC update submitted while one is running")
         plan, error = None, ""
+        memory = self.control.controller.memory()  # replaced, never mutated, by update
         try:
             plan = self.control.update(decision)
         except Exception as exception:  # the loop's safety decides what a failure means
@@ -46,7 +47,8 @@ class LockstepNmpc:
             took_s = (self.fixed_delay_s if self.fixed_delay_s is not None
                       else plan.update_time_s if plan is not None else 0.0)
         self._first = False
-        self._waiting = (self.clock() + took_s, NmpcResult(decision, update, plan, took_s, error))
+        result = NmpcResult(decision, update, plan, took_s, error, memory)
+        self._waiting = (self.clock() + took_s, result)
 
     def take(self) -> NmpcResult | None:
         """The waiting result once its computation time has passed on the clock."""

@@ -130,8 +130,7 @@ class NmpcSchedule:
         if self.hooks is not None:
             self.hooks.decided(decision)
         if self.recording is not None:
-            self.recording.nmpc_inputs(t, self.updates, decision.inputs,
-                                       self.control.controller.memory())
+            self.recording.nmpc_inputs(t, self.updates, decision.inputs)
         self._submitted[self.updates] = (t, self.truth() if self.truth is not None else None)
         self.stats.tick(self.clock())
         self.runner.submit(decision, self.updates)
@@ -160,6 +159,8 @@ class NmpcSchedule:
         self.stats.busy_s.append(result.wall_s)
         missed = delay_s > self.period_s if self.has_deadline else None
         self.deadline_misses += int(bool(missed))
+        if self.recording is not None and result.memory is not None:
+            self.recording.warm_start(decided_s, result.update, result.memory)
         if result.plan is None:
             self.solver_failures += 1
             if self.recording is not None:

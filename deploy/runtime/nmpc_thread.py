@@ -16,19 +16,21 @@ from collections.abc import Callable
 from dataclasses import dataclass
 
 from core.nmpc.mpc_plan import MpcPlan
+from core.nmpc.warm_start import ControllerMemory
 from deploy.runtime.controller import NmpcDecision, TeamController
 
 
 @dataclass(frozen=True)
 class NmpcResult:
-    """A finished update: its decision, number, plan, and time [s on the thread's clock] from
-    submit to done."""
+    """A finished update: its decision, number, plan, time [s on the runner's clock] from
+    submit to done, and the warm start it started from (for the log's keyframes)."""
 
     decision: NmpcDecision
     update: int
     plan: MpcPlan | None  # None: the update raised (``error`` says what)
     wall_s: float
     error: str = ""
+    memory: ControllerMemory | None = None
 
 
 class NmpcThread:
@@ -75,13 +77,14 @@ class NmpcThread:
                 decision, update, start = self._pending
                 self._pending = None
             plan, error = None, ""
+            memory = self.control.controller.memory()  # replaced, never mutated, by update
             try:
                 plan = self.control.update(decision)
             except Exception as exception:  # the loop's safety decides what a failure means
                 error = f"{type(exception).__name__}: {exception}"
             with self._condition:
                 self._result = NmpcResult(decision, update, plan, self.clock() - start,
-                                          error)
+                                          error, memory)
                 self._busy = False
 
     def close(self, timeout_s: float = 10.0) -> None:

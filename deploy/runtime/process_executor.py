@@ -16,9 +16,11 @@ import numpy as np
 
 from core.nmpc.admm_executor import LocalSolveRequest, LocalSolverSpec, solve_request
 from core.nmpc.nlp_solver import NlpSolution, SolveStats
+from deploy.runtime.process_names import name_this_process
 
 
-def _worker(spec: LocalSolverSpec, connection: Connection) -> None:
+def _worker(spec: LocalSolverSpec, agent: int, connection: Connection) -> None:
+    name_this_process(f"porter-admm{agent}")
     solver = spec.build()
     connection.send("ready")
     while True:
@@ -41,7 +43,7 @@ class ProcessExecutor:
         self._processes = []
         for agent in range(spec.agent_count):
             parent, child = context.Pipe()
-            process = context.Process(target=_worker, args=(spec, child), daemon=True,
+            process = context.Process(target=_worker, args=(spec, agent, child), daemon=True,
                                       name=f"porter-admm-agent{agent}")
             process.start()
             self._connections.append(parent)

@@ -45,6 +45,7 @@ import numpy as np
 from core.model.conventions import JOINT_COUNT, PAYLOAD_NAME
 from deploy.config.deploy_config import DeployConfig, Go2Link
 from deploy.config.scenario import Scenario
+from deploy.runtime.process_names import name_this_process
 from deploy.safety.checks import tilt_rad
 from deploy.safety.posture import sitting_posture
 from drivers.can.fake import FakeCanNode
@@ -295,6 +296,7 @@ def serve(spec: WorldSpec, control: Connection, can_link: Connection) -> None:
     Ctrl-C at the terminal reaches the whole process group: the world ignores it and lives
     until the parent, which sits the robots down first, says ``"stop"``."""
     signal.signal(signal.SIGINT, signal.SIG_IGN)
+    name_this_process("porter-world")
     try:
         world = SimWorld(spec, can_link)
     except Exception as error:  # reported to the parent, which raises it

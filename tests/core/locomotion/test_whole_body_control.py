@@ -77,6 +77,44 @@ def test_static_qp_satisfies_dynamics_friction_and_limits(robot_type: str) -> No
     np.testing.assert_allclose(acceleration[6:], output.joint_acceleration_rad_s2, atol=1e-5)
 
 
+def _random_state(wbc: WholeBodyController, rng: np.random.Generator) -> FloatingBaseState:
+    q = standing_configuration("go2", wbc.model)
+    quaternion = np.array([3.0, 0.0, 0.0, 0.0]) + rng.normal(size=4) * [1, 0.05, 0.05, 0.2]
+    return FloatingBaseState(np.array([0.1, -0.2, 0.3]) + rng.normal(size=3) * 0.02,
+                             quaternion / np.linalg.norm(quaternion), rng.normal(size=3) * 0.3,
+                             rng.normal(size=3) * 0.3, q[7:] + rng.normal(size=12) * 0.05,
+                             rng.normal(size=12) * 0.5)
+
+
+@pytest.mark.parametrize("stance", [(1, 1, 1, 1), (1, 0, 0, 1), (0, 1, 1, 0), (1, 1, 1, 0),
+                                    (0, 0, 0, 0)])
+def test_one_pinocchio_pass_per_tick_gives_the_same_torques(stance: tuple[int, ...]) -> None:
+    """``observe`` (SRB state and feet in the pass ``compute`` reuses) changes no figure; a
+    different state object, or a Pinocchio call in between, is computed afresh."""
+    rng = np.random.default_rng(sum(stance))
+    shared, fresh = _controller("go2", (0.0, 0.0, 0.1)), _controller("go2", (0.0, 0.0, 0.1))
+    weight = srb_parameters("go2").mass_kg * 9.81
+    for _ in range(5):
+        state, other = _random_state(shared, rng), _random_state(shared, rng)
+        srb, feet = shared.observe(state)
+        np.testing.assert_allclose(srb, fresh.srb_state(state), rtol=0, atol=1e-12)
+        np.testing.assert_allclose(feet, fresh.foot_positions(state), rtol=0, atol=1e-12)
+        target = _standing_target(srb + rng.normal(size=12) * 0.01, feet + 0.01,
+                                  np.array(stance, dtype=bool),
+                                  np.tile([0.0, 0.0, weight / 2], (4, 1)), rng.normal(size=6))
+        reused, alone = shared.compute(state, target), fresh.compute(state, target)
+        np.testing.assert_allclose(reused.torque_nm, alone.torque_nm, rtol=0, atol=1e-9)
+        np.testing.assert_allclose(reused.contact_force_n, alone.contact_force_n, atol=1e-9)
+        assert reused.success == alone.success
+        shared.observe(state)
+        shared.foot_positions(other)  # moves the Pinocchio data to another state
+        np.testing.assert_allclose(shared.compute(state, target).torque_nm, alone.torque_nm,
+                                   rtol=0, atol=1e-9)
+        shared.observe(other)
+        np.testing.assert_allclose(shared.compute(state, target).torque_nm, alone.torque_nm,
+                                   rtol=0, atol=1e-9)
+
+
 def _coupling_force(wbc: WholeBodyController, wrench: np.ndarray) -> np.ndarray:
     generalized = np.zeros(18)
     lever = wbc.coupling_in_base_m

@@ -240,6 +240,30 @@ def test_config_cross_checks_name_the_field(tmp_path: Path) -> None:
     assert load_deploy_config(path)[0].mocap.local_address == "192.168.1.5"
 
 
+def test_the_nmpc_executor_overrides_the_scenario_default_and_conflicts_are_named(
+        tmp_path: Path) -> None:
+    scenario = yaml.safe_load((CONFIG_DIR.parent / "scenarios" / "two_go2.yaml").read_text())
+    (tmp_path / "mine.yaml").write_text(yaml.safe_dump(scenario))
+    path = _config(tmp_path, nmpc={"runner": "process", "executor": "serial"})
+    data = yaml.safe_load(path.read_text())
+    data["scenario"] = "mine.yaml"
+    path.write_text(yaml.safe_dump(data))
+    config, loaded = load_deploy_config(path)
+    assert config.nmpc.runner == "process" and loaded.controller.executor == "serial"
+    scenario["controller"] = {**scenario.get("controller", {}), "executor": "process"}
+    (tmp_path / "mine.yaml").write_text(yaml.safe_dump(scenario))
+    with pytest.raises(ConfigError, match=r"nmpc.executor: 'serial', but the scenario sets "
+                       r"controller.executor: 'process'"):
+        load_deploy_config(path)
+    data["nmpc"] = {"runner": "thread"}  # no executor: the scenario's stands
+    path.write_text(yaml.safe_dump(data))
+    assert load_deploy_config(path)[1].controller.executor == "process"
+    data["nmpc"] = {"runner": "fiber"}
+    path.write_text(yaml.safe_dump(data))
+    with pytest.raises(ConfigError, match="nmpc.runner"):
+        load_deploy_config(path)
+
+
 def test_shipped_configs_load() -> None:
     for path in sorted(CONFIG_DIR.glob("*.yaml")):
         config, scenario = load_deploy_config(path)

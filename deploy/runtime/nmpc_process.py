@@ -1,0 +1,175 @@
+"""The NMPC in a process of its own: the same interface as ``deploy.runtime.nmpc_thread.NmpcThread``
+(``busy``, ``submit``, ``take``, ``close``), so no NMPC work runs on the loop's interpreter.
+
+In a thread, the NMPC's Python (guesses, parameters, consensus and dual updates, decoding,
+~4 ms per 2-agent update) takes the interpreter lock from the 500 Hz loop for whole switch
+intervals; in a process it competes for a core only. The process builds the scenario's NMPC
+(``deploy.runtime.controller.build_team_mpc``; its ADMM workers, if any, are its children),
+answers ``ready``, then takes one ``(update, inputs)`` at a time over a pipe and answers
+``(update, plan or None, error, done_monotonic_s, memory)``: plain arrays and dataclasses, no
+shared state. ``memory`` is the warm start the update started from, for the log's keyframes.
+
+The loop only polls the pipe (``take`` never blocks). A process that dies, or a pipe that
+breaks, yields an error result for the running update (the supervisor counts it as a failed
+update) and raises on the next ``submit``: the loop's exception handler then safe-stops.
+"""
+
+from __future__ import annotations
+
+import contextlib
+import multiprocessing as mp
+import signal
+import time
+from collections.abc import Callable
+from multiprocessing.connection import Connection
+
+from core.nmpc.mpc_inputs import MpcInputs
+from core.nmpc.settings import MpcSettings
+from deploy.config.scenario import Scenario
+from deploy.runtime.codegen_cache import CompiledCodeCache
+from deploy.runtime.controller import NmpcDecision, build_team_mpc
+from deploy.runtime.nmpc_thread import NmpcResult
+from deploy.runtime.process_names import name_this_process
+
+__all__ = ["NmpcProcess", "NmpcProcessError"]
+
+
+class NmpcProcessError(RuntimeError):
+    """The NMPC process is gone (died, or never started)."""
+
+
+def _serve(scenario: Scenario, settings: MpcSettings, cache: CompiledCodeCache,
+           connection: Connection) -> None:
+    # Ctrl-C at the terminal reaches the whole process group: the loop sits the team down,
+    # and the NMPC (its ADMM workers inherit the ignored signal) lives until it is told.
+    signal.signal(signal.SIGINT, signal.SIG_IGN)
+    name_this_process("porter-nmpc")
+    controller = build_team_mpc(scenario, settings, cache)
+    connection.send("ready")
+    try:
+        while True:
+            try:
+                message = connection.recv()
+            except (EOFError, OSError):  # the loop's process is gone
+                return
+            if message is None:
+                return
+            update, inputs = message
+            memory = controller.memory()
+            plan, error = None, ""
+            try:
+                plan = controller.update(inputs)
+            except Exception as exception:  # the loop's safety decides what a failure means
+                error = f"{type(exception).__name__}: {exception}"
+            connection.send((update, plan, error, time.monotonic(), memory))
+    finally:
+        if hasattr(controller, "close"):
+            controller.close()
+
+
+class NmpcProcess:
+    """Runs the scenario's NMPC (on ``settings``: ``TeamController.settings``) in a child
+    process, one decision at a time.
+
+    ``clock`` is the loop's clock (simulated seconds under a time scale); an update's
+    ``wall_s`` is converted to it from the system's monotonic clock, which both processes
+    share. Construction blocks until the NMPC is built (``start_timeout_s``: a cold cache
+    compiles for minutes).
+    """
+
+    def __init__(self, scenario: Scenario, settings: MpcSettings, cache: CompiledCodeCache,
+                 clock: Callable[[], float] = time.monotonic,
+                 start_timeout_s: float = 900.0) -> None:
+        self.clock = clock
+        context = mp.get_context("spawn")
+        self._connection, child = context.Pipe()
+        # Not a daemon: daemonic processes may not start the ADMM workers. It ends when told,
+        # or when its pipe closes (this process gone).
+        self._process = context.Process(target=_serve, args=(scenario, settings, cache, child),
+                                        name="porter-nmpc")
+        self._process.start()
+        child.close()
+        self._pending: tuple[NmpcDecision, int, float, float] | None = None
+        self._closed = False
+        try:
+            ready = self._connection.poll(start_timeout_s) and self._connection.recv() == "ready"
+        except (EOFError, OSError):
+            ready = False
+        if not ready:
+            self.close()
+            raise NmpcProcessError("the NMPC process did not start (see its error above)")
+
+    @property
+    def busy(self) -> bool:
+        """An update is submitted and its result not yet taken."""
+        return self._pending is not None
+
+    @property
+    def alive(self) -> bool:
+        return self._process.is_alive()
+
+    def submit(self, decision: NmpcDecision, update: int) -> None:
+        if self._pending is not None:
+            raise RuntimeError("NMPC update submitted while one is running")
+        inputs: MpcInputs = decision.inputs
+        try:
+            self._connection.send((update, inputs))
+        except (BrokenPipeError, OSError) as error:
+            raise NmpcProcessError(f"the NMPC process is gone ({error})") from error
+        self._pending = (decision, update, self.clock(), time.monotonic())
+
+    def take(self) -> NmpcResult | None:
+        """The finished update's result, if any (never blocks)."""
+        if self._pending is None:
+            return None
+        decision, update, submitted, submitted_monotonic = self._pending
+        try:
+            if not self._connection.poll(0.0):
+                if self._process.is_alive():
+                    return None
+                raise EOFError(f"exit code {self._process.exitcode}")
+            answer_update, plan, error, done_monotonic, memory = self._connection.recv()
+        except (EOFError, OSError) as failure:
+            self._pending = None
+            return NmpcResult(decision, update, None, self.clock() - submitted,
+                              f"NmpcProcessError: the NMPC process died ({failure})")
+        if answer_update != update:  # cannot happen with one update at a time
+            raise NmpcProcessError(f"NMPC answered update {answer_update}, expected {update}")
+        self._pending = None
+        return NmpcResult(decision, update, plan,
+                          self._on_clock(submitted, submitted_monotonic, done_monotonic),
+                          error, memory)
+
+    def _on_clock(self, submitted: float, submitted_monotonic: float,
+                  done_monotonic: float) -> float:
+        """Submit-to-done on the loop's clock: the loop clock runs at a constant rate against
+        the monotonic clock, so the rate measured since the submit converts the child's time."""
+        now, now_monotonic = self.clock(), time.monotonic()
+        elapsed_monotonic = now_monotonic - submitted_monotonic
+        if elapsed_monotonic <= 0.0:
+            return now - submitted
+        rate = (now - submitted) / elapsed_monotonic
+        return max(done_monotonic - submitted_monotonic, 0.0) * rate
+
+    def close(self, timeout_s: float = 10.0) -> None:
+        """Stop the process after the running update (if any) finishes; kill it if it does
+        not stop within ``timeout_s``."""
+        if self._closed:
+            return
+        self._closed = True
+        with contextlib.suppress(BrokenPipeError, OSError):
+            self._connection.send(None)
+        self._process.join(timeout_s)
+        if self._process.is_alive():
+            self._process.kill()
+            self._process.join(1.0)
+        self._connection.close()
+
+    def kill(self) -> None:
+        """Kill the process at once (tests: a dead NMPC)."""
+        self._process.kill()
+        self._process.join(5.0)
+
+    def __del__(self) -> None:
+        with contextlib.suppress(Exception):
+            self.close(timeout_s=1.0)
