@@ -8,6 +8,8 @@ __all__ = ["StrictModel"]
 
 
 class StrictModel(BaseModel):
-    """Base: unknown fields are errors, so a typo in YAML names the bad field."""
+    """Base: unknown fields are errors, so a typo in YAML names the bad field; NaN and
+    infinity are refused in every float (``.inf`` would silently switch a timeout or a bound
+    off)."""
 
-    model_config = ConfigDict(extra="forbid", frozen=True)
+    model_config = ConfigDict(extra="forbid", frozen=True, allow_inf_nan=False)

@@ -1,7 +1,7 @@
-"""``porter bench``: NMPC, simulation, recorder, drivers and deploy benchmarks.
+"""``porter bench``: NMPC, simulation, recorder, drivers, WBC tick and deploy benchmarks.
 
 Each bench is its own module (``deploy.bench.nmpc``, ``.sim``, ``.recorder``, ``.drivers``,
-``.deploy_runs``; ``.rti_fidelity`` serves the NMPC bench) with ``run_bench`` and
+``.wbc_tick``, ``.deploy_runs``; ``.rti_fidelity`` serves the NMPC bench) with ``run_bench`` and
 ``format_table``; nothing is re-exported here, as the
 names are the same in each.
 """

@@ -21,11 +21,13 @@ from pathlib import Path
 from typing import Any
 
 import numpy as np
+import yaml
 
 from core.model.conventions import PAYLOAD_NAME
 from deploy.config.deploy_config import DeployConfig, load_deploy_config
 from deploy.config.files import ConfigError
 from deploy.recording.flight_recorder import FlightRecorder
+from deploy.recording.log_format import DEPLOY_CONFIG_ATTACHMENT
 from deploy.recording.run_record import default_log_path, open_run_recorder
 from deploy.runtime.clock import PacedClock
 from deploy.runtime.codegen_cache import CompiledCodeCache
@@ -106,10 +108,12 @@ def run_deploy(args: argparse.Namespace) -> int:
             config = backend.config  # the links to the fakes, sim.safety_overrides applied
         links = open_links(config, clock)
         if not args.no_record:
-            path = Path(args.record) if args.record else default_log_path(scenario).with_name(
-                f"deploy-{default_log_path(scenario).name}")
-            recorder = open_run_recorder(path, scenario, control.settings, control.wbc_settings,
-                                         args.backend, config.recorder)
+            path = (Path(args.record) if args.record
+                    else default_log_path(scenario, prefix="deploy-"))
+            recorder = open_run_recorder(
+                path, scenario, control.settings, control.wbc_settings, args.backend,
+                config.recorder, extra_attachments={DEPLOY_CONFIG_ATTACHMENT: yaml.safe_dump(
+                    config.model_dump(mode="json"), sort_keys=False).encode()})
             say(f"recording to {path}")
         if runner is not None:
             runner.clock = clock

@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import argparse
+import math
 import signal
 import sys
 from pathlib import Path
@@ -10,6 +11,28 @@ from typing import TYPE_CHECKING
 
 if TYPE_CHECKING:
     from core.nmpc.settings import MpcSettings
+
+
+def positive_number(text: str) -> float:
+    """An argument that must be a positive, finite number (durations, time scales)."""
+    try:
+        value = float(text)
+    except ValueError:
+        raise argparse.ArgumentTypeError(f"{text!r} is not a number") from None
+    if not (math.isfinite(value) and value > 0.0):
+        raise argparse.ArgumentTypeError(f"must be a positive finite number, got {text}")
+    return value
+
+
+def count(text: str) -> int:
+    """An argument that must be a whole number >= 1 (runs, samples, agents)."""
+    try:
+        value = int(text)
+    except ValueError:
+        raise argparse.ArgumentTypeError(f"{text!r} is not a whole number") from None
+    if value < 1:
+        raise argparse.ArgumentTypeError(f"must be at least 1, got {text}")
+    return value
 
 
 def mpc_settings(args: argparse.Namespace) -> MpcSettings:
@@ -98,6 +121,20 @@ def _bench_drivers(args: argparse.Namespace) -> int:
     return 0
 
 
+def _bench_wbc(args: argparse.Namespace) -> int:
+    import json
+
+    from deploy.bench.wbc_tick import format_table, run_bench
+
+    print(f"porter bench wbc: {args.ticks} WBC ticks of {args.scenario}'s team per pace")
+    rows = run_bench(args.ticks, args.scenario)
+    print(format_table(rows))
+    if args.json:
+        Path(args.json).write_text(json.dumps({"rows": rows}, indent=2))
+        print(f"wrote {args.json}")
+    return 0
+
+
 def _bench_deploy(args: argparse.Namespace) -> int:
     import json
 
@@ -159,11 +196,12 @@ def build_parser() -> argparse.ArgumentParser:
     bench = commands.add_parser("bench", help="benchmarks that print tables")
     bench_kinds = bench.add_subparsers(dest="bench", required=True)
     nmpc = bench_kinds.add_parser("nmpc", help="centralized vs ADMM NMPC update times")
-    nmpc.add_argument("--agents", type=int, nargs="+", default=[2, 3, 4])
+    nmpc.add_argument("--agents", type=count, nargs="+", default=[2, 3, 4])
     nmpc.add_argument("--solvers", nargs="+", default=["fatrop", "rti"],
                       choices=["fatrop", "rti", "ipopt"],
                       help="solvers with centralized and distributed rows")
-    nmpc.add_argument("--duration", type=float, default=6.0, help="closed-loop seconds per row")
+    nmpc.add_argument("--duration", type=positive_number, default=6.0,
+                      help="closed-loop seconds per row")
     nmpc.add_argument("--serial", dest="parallel", action="store_false",
                       help="run ADMM local solves serially instead of one process per agent")
     nmpc.add_argument("--no-reference", action="store_true",
@@ -176,7 +214,7 @@ def build_parser() -> argparse.ArgumentParser:
 
     bench_sim = bench_kinds.add_parser("sim", help="real-time factor and loop times in MuJoCo")
     bench_sim.add_argument("scenarios", nargs="*", help="scenario names (default: all shipped)")
-    bench_sim.add_argument("--duration", type=float, default=5.0,
+    bench_sim.add_argument("--duration", type=positive_number, default=5.0,
                            help="simulated seconds per scenario")
     bench_sim.add_argument("--executor", default="process", choices=["process", "serial"])
     bench_sim.add_argument("--json", help="also write the rows as JSON {rows: [...]}")
@@ -186,10 +224,11 @@ def build_parser() -> argparse.ArgumentParser:
     bench_rec = bench_kinds.add_parser("recorder", help="flight-recorder overhead, rate, size, "
                                        "memory")
     bench_rec.add_argument("--scenario", default="two_go2")
-    bench_rec.add_argument("--duration", type=float, default=4.0, help="simulated s per run")
-    bench_rec.add_argument("--repeats", type=int, default=2, help="runs per configuration")
+    bench_rec.add_argument("--duration", type=positive_number, default=4.0,
+                           help="simulated s per run")
+    bench_rec.add_argument("--repeats", type=count, default=2, help="runs per configuration")
     bench_rec.add_argument("--executor", default="process", choices=["process", "serial"])
-    bench_rec.add_argument("--memory-minutes", type=float, default=30.0,
+    bench_rec.add_argument("--memory-minutes", type=positive_number, default=30.0,
                            help="simulated minutes for the memory check (0: skip)")
     bench_rec.add_argument("--json", help="also write the figures as JSON")
     bench_rec.add_argument("--config", help="YAML file overriding MpcSettings fields")
@@ -197,9 +236,9 @@ def build_parser() -> argparse.ArgumentParser:
 
     bench_drv = bench_kinds.add_parser("drivers", help="latency and jitter of each driver shim "
                                        "against its fake on loopback")
-    bench_drv.add_argument("--samples", type=int, default=2000,
+    bench_drv.add_argument("--samples", type=count, default=2000,
                            help="round trips per Unitree link (Go2 DDS, A1 UDP)")
-    bench_drv.add_argument("--stream-samples", type=int, default=600,
+    bench_drv.add_argument("--stream-samples", type=count, default=600,
                            help="NatNet frames and CAN samples")
     bench_drv.add_argument("--domain", type=int, default=0, help="DDS domain id (loopback)")
     bench_drv.add_argument("--json", help="also write the rows and the peers' counters as JSON")
@@ -209,20 +248,28 @@ def build_parser() -> argparse.ArgumentParser:
                                        "deploy --backend sim per time scale")
     bench_dep.add_argument("--config", default="two_go2",
                            help="deploy config (path or shipped name; default two_go2)")
-    bench_dep.add_argument("--time-scales", type=float, nargs="+", default=[0.1, 1.0],
+    bench_dep.add_argument("--time-scales", type=positive_number, nargs="+", default=[0.1, 1.0],
                            help="sim.time_scale values (default 0.1 1.0)")
-    bench_dep.add_argument("--runs", type=int, default=1, help="runs per time scale")
-    bench_dep.add_argument("--duration", type=float, default=3.0,
+    bench_dep.add_argument("--runs", type=count, default=1, help="runs per time scale")
+    bench_dep.add_argument("--duration", type=positive_number, default=3.0,
                            help="seconds running once armed (simulated)")
     bench_dep.add_argument("--json", help="also write the rows as JSON")
     bench_dep.set_defaults(handler=_bench_deploy)
+
+    bench_wbc = bench_kinds.add_parser("wbc", help="work of the 500 Hz WBC tick, back to "
+                                       "back and paced")
+    bench_wbc.add_argument("--ticks", type=count, default=1000, help="ticks per pace")
+    bench_wbc.add_argument("--scenario", default="two_go2", help="whose team (shipped name)")
+    bench_wbc.add_argument("--json", help="also write the rows as JSON {rows: [...]}")
+    bench_wbc.set_defaults(handler=_bench_wbc)
 
     sim = commands.add_parser("sim", help="run a scenario on the embedded MuJoCo backend")
     sim.add_argument("scenario", nargs="?", default="two_go2",
                      help="shipped scenario name or path of a scenario YAML (default two_go2)")
     sim.add_argument("--json", help="write the summary metrics as JSON")
     sim.add_argument("--config", help="YAML file overriding MpcSettings fields")
-    sim.add_argument("--duration", type=float, help="override the scenario's duration_s")
+    sim.add_argument("--duration", type=positive_number,
+                     help="override the scenario's duration_s")
     sim.add_argument("--seed", type=int, help="override the scenario's seed")
     sim.add_argument("--mode", choices=["distributed", "centralized", "wrench-only"],
                      help="override the scenario's controller.mode")
@@ -234,7 +281,7 @@ def build_parser() -> argparse.ArgumentParser:
     sim.add_argument("--record", metavar="LOG.mcap",
                      help="flight-recorder file (default runs/<scenario>-<time>.mcap)")
     sim.add_argument("--no-record", action="store_true", help="do not write a flight log")
-    sim.add_argument("--keyframe-every", type=int, metavar="N",
+    sim.add_argument("--keyframe-every", type=count, metavar="N",
                      help="log the NMPC warm start every N updates (default 60)")
     sim.add_argument("--rerun", nargs="?", const="spawn", metavar="TARGET",
                      help="stream live to Rerun: spawn a viewer (default), 'connect' to a "
@@ -249,7 +296,7 @@ def build_parser() -> argparse.ArgumentParser:
     deploy.add_argument("--backend", choices=["hw", "sim"], default="hw",
                         help="hw: the robots; sim: MuJoCo behind fakes on loopback (default hw)")
     deploy.add_argument("--yes", action="store_true", help="arm without asking the operator")
-    deploy.add_argument("--duration", type=float, metavar="S",
+    deploy.add_argument("--duration", type=positive_number, metavar="S",
                         help="seconds to run once armed (default: the scenario's duration_s)")
     deploy.add_argument("--record", metavar="LOG.mcap",
                         help="flight log (default runs/deploy-<scenario>-<time>.mcap)")
@@ -280,7 +327,7 @@ def build_parser() -> argparse.ArgumentParser:
     regress.add_argument("logs", nargs="+", metavar="LOG", help="LOG.mcap files")
     regress.add_argument("--settings", metavar="YAML",
                          help="MpcSettings overriding the log's attached ones (what-if)")
-    regress.add_argument("--max-decisions", type=int,
+    regress.add_argument("--max-decisions", type=count,
                          help="replay only the first N decisions of each log")
     regress.add_argument("--json", help="also write the per-log report as JSON")
     regress.add_argument("--refresh-expectations", action="store_true",

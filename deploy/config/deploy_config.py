@@ -39,9 +39,9 @@ class Go2Link(StrictModel):
     domain_id: int = Field(0, ge=0, le=232)
     topic_prefix: str = ""  # "" = the robot's own rt/lowcmd, rt/lowstate
     release_sport_mode: bool = True  # ask the motion switcher before low-level control
-    link_timeout_s: float = Field(0.1, gt=0)
-    contact_threshold_n: float = Field(20.0, ge=0)
-    foot_force_n_per_count: float = Field(1.0, gt=0)  # UNVERIFIED scale of the raw counts
+    link_timeout_s: float = Field(0.1, gt=0, le=1.0)
+    contact_threshold_n: float = Field(20.0, ge=0, le=500.0)
+    foot_force_n_per_count: float = Field(1.0, gt=0, le=100.0)  # UNVERIFIED scale of the counts
 
 
 class A1Link(StrictModel):
@@ -51,9 +51,9 @@ class A1Link(StrictModel):
     robot_address: tuple[str, int] = ("192.168.123.10", 8007)
     local_address: str = "127.0.0.1"  # must be on the robot's network to reach it
     local_port: int = Field(8080, ge=0, le=65535)  # 0: any free port
-    link_timeout_s: float = Field(0.1, gt=0)
-    contact_threshold_n: float = Field(20.0, ge=0)
-    foot_force_n_per_count: float = Field(1.0, gt=0)
+    link_timeout_s: float = Field(0.1, gt=0, le=1.0)
+    contact_threshold_n: float = Field(20.0, ge=0, le=500.0)
+    foot_force_n_per_count: float = Field(1.0, gt=0, le=100.0)
 
 
 RobotLink = Annotated[Go2Link | A1Link, Field(discriminator="driver")]
@@ -74,8 +74,8 @@ class MocapConfig(StrictModel):
     bodies: dict[str, str] = {}
     body_ids: dict[str, int] | None = None
     obstacle_bodies: list[str | None] = []  # per scenario obstacle: a body whose position is used
-    stale_timeout_s: float = Field(0.1, gt=0)
-    velocity_window_s: float = Field(0.08, gt=0)  # least-squares velocity from poses this old
+    stale_timeout_s: float = Field(0.1, gt=0, le=1.0)
+    velocity_window_s: float = Field(0.08, gt=0, le=1.0)  # least-squares velocity from poses this old
 
 
 class CanConfig(StrictModel):
@@ -91,19 +91,20 @@ class PostureConfig(StrictModel):
     posture and the SRDF standing posture, or the sitting posture (base lowered by
     ``sit_lowering_m`` with the feet in place)."""
 
-    stand_up_s: float = Field(2.5, gt=0)
-    sit_down_s: float = Field(2.0, gt=0)
-    settle_s: float = Field(0.5, ge=0)  # hold standing before arming
+    stand_up_s: float = Field(2.5, gt=0, le=30.0)
+    sit_down_s: float = Field(2.0, gt=0, le=30.0)
+    settle_s: float = Field(0.5, ge=0, le=10.0)  # hold standing before arming
     sit_lowering_m: float = Field(0.1, ge=0.0, le=0.2)
-    kp: float = Field(60.0, gt=0)  # [N m/rad]
-    kd: float = Field(3.0, ge=0)  # [N m s/rad]
-    final_damping_s: float = Field(0.5, ge=0)  # damping after sitting down, before exit
+    kp: float = Field(60.0, gt=0, le=200.0)  # [N m/rad]
+    kd: float = Field(3.0, gt=0, le=20.0)  # [N m s/rad]
+    final_damping_s: float = Field(0.5, ge=0, le=10.0)  # damping after sitting down
 
 
 class RatesConfig(StrictModel):
-    wbc_hz: float = Field(500.0, gt=0)
-    nmpc_hz: float = Field(60.0, gt=0)
-    max_plan_age_s: float = Field(0.25, gt=0)  # older active plan while running: safe stop
+    wbc_hz: float = Field(500.0, ge=100.0, le=2000.0)  # the motors' firmware wants >= 100 Hz
+    nmpc_hz: float = Field(60.0, ge=10.0, le=200.0)
+    max_plan_age_s: float = Field(0.25, gt=0, le=1.0)  # older active plan while running: stop
+    max_armed_s: float = Field(2.0, gt=0, le=30.0)  # ARMED this long with no first plan: stop
 
 
 class NmpcRunConfig(StrictModel):
@@ -117,25 +118,28 @@ class NmpcRunConfig(StrictModel):
 
 
 class PreflightConfig(StrictModel):
-    timeout_s: float = Field(5.0, gt=0)  # wait this long for every link before reporting
-    max_joint_velocity_rad_s: float = Field(1.0, gt=0)  # robots must be at rest
-    start_tolerance_m: float = Field(0.3, gt=0)  # payload this close to the scenario's start
+    timeout_s: float = Field(5.0, gt=0, le=120.0)  # wait this long for every link, then report
+    max_joint_velocity_rad_s: float = Field(1.0, gt=0, le=5.0)  # robots must be at rest
+    start_tolerance_m: float = Field(0.3, gt=0, le=2.0)  # payload this near the scenario's start
 
 
 class SimFault(StrictModel):
     """A fault the simulated world injects ``at_s`` simulated seconds after it starts running
     (tests and drills of the safety stop): ``estop_press`` (the CAN node's heartbeats say
     "stopped"), ``heartbeat_loss`` (they stop), ``mocap_loss`` (NatNet frames stop),
-    ``robot_silent`` (``robot``'s fake stops publishing its state)."""
+    ``robot_silent`` (``robot``'s fake stops publishing its state), ``robot_frozen`` (a
+    Go2 ``robot``'s fake keeps publishing its last state, tick included)."""
 
     at_s: float = Field(ge=0)
-    kind: Literal["estop_press", "heartbeat_loss", "mocap_loss", "robot_silent"]
+    kind: Literal["estop_press", "heartbeat_loss", "mocap_loss", "robot_silent",
+                  "robot_frozen"]
     robot: str | None = None
 
     @model_validator(mode="after")
-    def _robot_iff_silent(self) -> SimFault:
-        if (self.kind == "robot_silent") != (self.robot is not None):
-            raise ValueError("robot: name the robot for robot_silent, and only for it")
+    def _robot_iff_robot_fault(self) -> SimFault:
+        if (self.kind in ("robot_silent", "robot_frozen")) != (self.robot is not None):
+            raise ValueError("robot: name the robot for robot_silent and robot_frozen, and "
+                             "only for them")
         return self
 
 
@@ -186,6 +190,18 @@ class DeployConfig(StrictModel):
                 InitErrorDetails(type=PydanticCustomError("safety", "{message}", {
                     "message": item["msg"]}), loc=("sim", "safety_overrides", *item["loc"]),
                     input=item["input"]) for item in error.errors()]) from None
+        return self
+
+    @model_validator(mode="after")
+    def _budgets_can_trip(self) -> DeployConfig:
+        for where, safety in (("safety", self.safety), ("sim.safety_overrides", None)):
+            settings = safety if safety is not None else self.sim_safety()
+            most = self.rates.nmpc_hz * settings.deadline_window_s
+            if settings.deadline_overrun_budget > most:
+                raise ValueError(
+                    f"{where}: deadline_overrun_budget {settings.deadline_overrun_budget} can "
+                    f"never be used up: at most rates.nmpc_hz x deadline_window_s = {most:g} "
+                    "updates fit in the window")
         return self
 
     def sim_safety(self) -> SupervisorSettings:
@@ -277,4 +293,9 @@ def load_deploy_config(path_or_name: Path | str) -> tuple[DeployConfig, Scenario
         unknown = [name for name in names if name not in known]
         if unknown:
             raise ConfigError(f"{path}: {field_name}: unknown {unknown}; known {known}")
+    for fault in config.sim.faults:
+        if fault.kind == "robot_frozen" and not isinstance(config.robots[str(fault.robot)],
+                                                           Go2Link):
+            raise ConfigError(f"{path}: sim.faults: robot_frozen needs a Go2 (its tick "
+                              f"counter), {fault.robot} is not one")
     return config, scenario

@@ -21,7 +21,7 @@ _SOURCES = {
         "memory_from_message", "compare", "regress_log", "format_report", "refresh_expectations",
         "run_regress"],
     "deploy.recording.run_record": ["git_revision", "run_metadata", "run_attachments",
-        "open_run_recorder", "default_log_path"],
+        "open_run_recorder", "default_log_path", "safe_file_stem"],
 }
 __all__ = ["DecodedMessage", "FlightRecorder", "LogError", "LogFile", "LogRegression",
            "LoopRecording", "RecorderSettings", "Recovery", "array", "as_list",
@@ -30,6 +30,7 @@ __all__ = ["DecodedMessage", "FlightRecorder", "LogError", "LogFile", "LogRegres
            "from_array", "git_revision", "inputs_from_message", "joint_command",
            "memory_from_message", "mocap_messages", "mocap_topic", "obstacle_scene",
            "open_run_recorder", "payload_box", "pose_in_frame", "recover", "refresh_expectations",
+           "safe_file_stem",
            "regress_log", "robot_state", "robot_topic", "run_attachments", "run_metadata",
            "run_regress", "timestamp", "to_nanoseconds", "update_message", "warm_start_message"]
 __getattr__ = lazy_exports(__name__, _SOURCES)

@@ -56,8 +56,9 @@ class FlightRecorder:
         self.settings = settings or RecorderSettings()
         self.path.parent.mkdir(parents=True, exist_ok=True)
         self._stream = open(self.path, "wb")  # noqa: SIM115 -- closed in close()
+        # Data CRCs on: a reader can tell a torn or corrupted chunk from a good one.
         self._writer = Writer(self._stream, chunk_size=self.settings.chunk_size_bytes,
-                              compression=CompressionType.ZSTD)
+                              compression=CompressionType.ZSTD, enable_data_crcs=True)
         self._writer.start(profile=PROFILE, library="porter flight recorder")
         for name, data in (metadata or {}).items():
             self._writer.add_metadata(name, data)

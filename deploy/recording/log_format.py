@@ -39,6 +39,7 @@ SUMMARY_METADATA = "summary"  # the run's summary metrics (JSON under key "json"
 SCENARIO_ATTACHMENT = "scenario.yaml"
 MPC_SETTINGS_ATTACHMENT = "mpc_settings.yaml"
 WBC_SETTINGS_ATTACHMENT = "wbc_settings.yaml"
+DEPLOY_CONFIG_ATTACHMENT = "deploy_config.yaml"  # porter deploy: the config as run
 
 # topics
 TF = "/tf"

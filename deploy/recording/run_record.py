@@ -5,8 +5,10 @@ from __future__ import annotations
 
 import datetime
 import importlib.metadata
+import itertools
 import os
 import platform
+import re
 import socket
 import subprocess
 from pathlib import Path
@@ -84,11 +86,38 @@ def run_attachments(scenario: Scenario, mpc_settings: MpcSettings,
 def open_run_recorder(path: Path | str, scenario: Scenario, mpc_settings: MpcSettings,
                       wbc_settings: WbcSettings, backend: str,
                       settings: RecorderSettings | None = None,
-                      sinks: list[Sink] | None = None) -> FlightRecorder:
+                      sinks: list[Sink] | None = None,
+                      extra_attachments: dict[str, bytes] | None = None) -> FlightRecorder:
+    """A flight recorder on ``path`` with the run's metadata and attachments (plus
+    ``extra_attachments``, e.g. the deploy config)."""
+    attachments = {**run_attachments(scenario, mpc_settings, wbc_settings),
+                   **(extra_attachments or {})}
     return FlightRecorder(path, settings, {RUN_METADATA: run_metadata(scenario, backend)},
-                          run_attachments(scenario, mpc_settings, wbc_settings), sinks or [])
+                          attachments, sinks or [])
 
 
-def default_log_path(scenario: Scenario, directory: Path | str = "runs") -> Path:
+def safe_file_stem(name: str) -> str:
+    """``name`` as a file-name stem that stays in its folder: letters, digits, ``.``, ``_``
+    and ``-`` only (anything else, path separators included, becomes ``_``), no leading dot."""
+    stem = re.sub(r"[^A-Za-z0-9._-]", "_", name).lstrip(".")
+    return stem or "run"
+
+
+def default_log_path(scenario: Scenario, directory: Path | str = "runs",
+                     prefix: str = "") -> Path:
+    """A new log file ``<directory>/<prefix><scenario>-<date>-<time>[-n].mcap``, created
+    empty here so that no other run (in this process or another) gets the same name: two runs
+    in the same second get ``-2``, ``-3``, ... and nothing is ever overwritten. The scenario
+    name is sanitized (``safe_file_stem``): it cannot leave ``directory``."""
+    folder = Path(directory)
+    folder.mkdir(parents=True, exist_ok=True)
     stamp = datetime.datetime.now().strftime("%Y%m%d-%H%M%S")
-    return Path(directory) / f"{scenario.name}-{stamp}.mcap"
+    stem = f"{prefix}{safe_file_stem(scenario.name)}-{stamp}"
+    for attempt in itertools.count(1):
+        path = folder / (f"{stem}.mcap" if attempt == 1 else f"{stem}-{attempt}.mcap")
+        try:
+            os.close(os.open(path, os.O_CREAT | os.O_EXCL | os.O_WRONLY, 0o644))
+        except FileExistsError:
+            continue
+        return path
+    raise AssertionError("unreachable")

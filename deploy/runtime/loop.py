@@ -110,6 +110,7 @@ class ControlLoop:
         self.heights: dict[str, list[float]] = {name: [] for name in self.names}
         self.ended_by = ""
         self.stopped_early = False
+        self._overruns_seen = 0  # the clock's overrun count at the last tick
 
     def now(self) -> float:
         return self.clock.now() - self.t0
@@ -126,6 +127,7 @@ class ControlLoop:
             "nmpc_failed_updates": nmpc.solver_failures,
             "nmpc_margin_flags": nmpc.margin_flags,
             "torque_saturations": dict(self.saturations),
+            "wbc_failed_ticks": supervisor.wbc_failures.failed_ticks,
         }
 
     def say(self, text: str) -> None:
@@ -178,9 +180,11 @@ class ControlLoop:
         stages.mark("nmpc")
         estop = self.links.estop.status() if self.links.estop is not None else None
         age = self.links.tracker.age_s(self.required_bodies) if self.links.tracker else None
+        overruns = self.clock.overruns
+        overran, self._overruns_seen = overruns > self._overruns_seen, overruns
         self.supervisor.check(SafetyInputs(
             t, estop.run_allowed if estop else False, estop.reason if estop else "no e-stop",
-            age, measurements, link_errors, *flags))
+            age, measurements, link_errors, *flags, loop_overrun=overran))
         plan_age_s = t - self.nmpc.plan_start_s
         max_age_s = self.settings.rates.max_plan_age_s
         if self.supervisor.state == S.RUNNING and plan_age_s > max_age_s:
@@ -245,6 +249,8 @@ class ControlLoop:
         if state == S.RUNNING and plan is not None and len(measurements) == len(self.names):
             steps = self.control.wbc_steps(t, plan, self.nmpc.plan_start_s,
                                            [measurements[n] for n in self.names])
+            for name, step in zip(self.names, steps, strict=True):
+                self.supervisor.wbc_ticked(t, name, step.output.success, step.output.status)
             if self.hooks is not None:
                 self.hooks.wbc_stepped(steps)
             steps = [replace(step, command=self._saturate(name, step.command, measurements[name]))
@@ -345,6 +351,9 @@ class ControlLoop:
                 supervisor.begin_run(t)
                 if frame is not None:
                     self.frames["start"] = frame
+            elif elapsed > self.settings.rates.max_armed_s:
+                supervisor.trigger_safe_stop(t, f"no NMPC plan {elapsed:.3f} s after arming "
+                                                f"(max {self.settings.rates.max_armed_s} s)")
         elif state == S.RUNNING and self.sequence == "deploy":
             if self.stop() or elapsed >= self.duration_s:
                 if frame is not None:

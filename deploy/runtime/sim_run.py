@@ -69,7 +69,8 @@ class SimRun:
         self.obstacles = self.control.obstacles
         scene = build_team_scene(
             scenario.team_settings(), payload_true_mass_kg=scenario.true_payload_mass_kg,
-            obstacles=[(*o.position_m, o.radius_m, o.height_m) for o in scenario.obstacles],
+            obstacles=[(*o.position_m, o.radius_m, o.height_m, *o.velocity_m_s)
+                       for o in scenario.obstacles],
             timestep_s=PHYSICS_TIMESTEP_S, payload_height_m=scenario.reference.payload_height_m)
         noise = scenario.disturbances
         self.simulation = TeamSimulation(scene, seed=scenario.seed,

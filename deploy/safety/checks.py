@@ -39,24 +39,40 @@ _MEASUREMENT_FIELDS = tuple(field.name for field in fields(RobotMeasurement))
 class SupervisorSettings(StrictModel):
     """Fault thresholds of the safety supervisor (``safety:`` in deploy configs)."""
 
-    mocap_timeout_s: float = Field(0.1, gt=0.0, description="oldest MoCap frame tolerated")
+    # Every bound keeps the check meaningful: a timeout longer than ~1 s, a tilt past ~70
+    # degrees, zero damping in a safe stop or a budget that can never be used up would switch
+    # the safety off without saying so.
+    mocap_timeout_s: float = Field(0.1, gt=0.0, le=1.0, description="oldest MoCap frame "
+                                   "tolerated [s]")
     heartbeat_timeout_s: float = Field(
-        0.1, gt=0.0, description="informational: the EstopMonitor applies its own timeout")
+        0.1, gt=0.0, le=1.0,
+        description="informational: the EstopMonitor applies its own timeout [s]")
     max_consecutive_solver_failures: int = Field(
-        3, ge=0, description="more consecutive failed NMPC updates than this trip")
+        3, ge=0, le=30, description="more consecutive failed NMPC updates than this trip")
     deadline_overrun_budget: int = Field(
-        30, ge=0, description="more NMPC deadline overruns than this within the window trip")
-    deadline_window_s: float = Field(1.0, gt=0.0, description="window of the overrun budget")
-    max_tilt_rad: float = Field(0.7, gt=0.0, description="largest trunk tilt from upright")
+        30, ge=0, le=600, description="more NMPC deadline overruns than this within the "
+                                      "window trip (at most nmpc_hz x window in a deploy config)")
+    deadline_window_s: float = Field(1.0, gt=0.0, le=10.0,
+                                     description="window of the overrun budget [s]")
+    max_tilt_rad: float = Field(0.7, gt=0.0, le=1.2,
+                                description="largest trunk tilt from upright [rad]")
     min_base_height_fraction: float = Field(
-        0.5, ge=0.0, description="lowest base height, fraction of the nominal standing height "
-                                 "(checked while ARMED and RUNNING)")
-    max_joint_velocity_rad_s: float = Field(30.0, gt=0.0)
+        0.5, ge=0.1, le=1.0, description="lowest base height, fraction of the nominal standing "
+                                         "height (checked while ARMED and RUNNING)")
+    max_joint_velocity_rad_s: float = Field(30.0, gt=0.0, le=60.0)
     joint_limit_margin_rad: float = Field(
-        0.0, description="joint positions within [lower - margin, upper + margin] are fine")
+        0.0, ge=0.0, le=0.2,
+        description="joint positions within [lower - margin, upper + margin] are fine [rad]")
     torque_limit_fraction: float = Field(
         1.0, gt=0.0, le=1.0, description="commanded |tau| beyond fraction * limit trips")
-    damping_kd: float = Field(2.0, ge=0.0, description="joint damping [N m s/rad] in a safe stop")
+    damping_kd: float = Field(2.0, gt=0.0, le=20.0,
+                              description="joint damping [N m s/rad] in a safe stop")
+    max_consecutive_wbc_failures: int = Field(
+        2, ge=0, le=25, description="more consecutive failed WBC QPs of one robot than this "
+                                    "trip (a failed tick repeats the robot's last torques)")
+    loop_overrun_budget: int = Field(
+        50, ge=0, le=500, description="more control-loop ticks starting over a period late "
+                                      "than this within deadline_window_s trip")
 
 
 @dataclass
@@ -223,13 +239,34 @@ class SolverFailureCounter:
         return None
 
 
-class DeadlineOverrunWindow:
-    """NMPC deadline overruns in the last ``window_s`` seconds, i.e. at times in
-    (t - window_s, t]; more than ``budget`` of them is a fault."""
+class WbcFailureCounter:
+    """Consecutive failed WBC QPs per robot; a solved tick resets that robot's count."""
 
-    def __init__(self, budget: int, window_s: float) -> None:
+    def __init__(self, max_consecutive_failures: int) -> None:
+        self.max_consecutive_failures = max_consecutive_failures
+        self.consecutive: dict[str, int] = {}
+        self.failed_ticks = 0  # every failed QP of the run, all robots
+
+    def update(self, name: str, success: bool, status: int) -> str | None:
+        """Count one WBC tick of robot ``name`` (``status``: the QP solver's exit flag)."""
+        count = 0 if success else self.consecutive.get(name, 0) + 1
+        self.consecutive[name] = count
+        self.failed_ticks += int(not success)
+        if count > self.max_consecutive_failures:
+            return (f"WBC failed: {name}'s QP failed {count} consecutive ticks (status "
+                    f"{status}; max {self.max_consecutive_failures})")
+        return None
+
+
+class DeadlineOverrunWindow:
+    """Overruns (NMPC deadlines, or loop ticks with ``what``) in the last ``window_s``
+    seconds, i.e. at times in (t - window_s, t]; more than ``budget`` of them is a fault."""
+
+    def __init__(self, budget: int, window_s: float,
+                 what: str = "NMPC deadline overruns") -> None:
         self.budget = budget
         self.window_s = window_s
+        self.what = what
         self._overrun_times_s: deque[float] = deque()
 
     @property
@@ -245,6 +282,6 @@ class DeadlineOverrunWindow:
         while times and times[0] <= time_s - self.window_s:
             times.popleft()
         if len(times) > self.budget:
-            return (f"NMPC deadline overruns: {len(times)} within {self.window_s} s "
+            return (f"{self.what}: {len(times)} within {self.window_s} s "
                     f"(budget {self.budget})")
         return None

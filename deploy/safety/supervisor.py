@@ -38,6 +38,7 @@ from deploy.safety.checks import (
     RobotLimits,
     SolverFailureCounter,
     SupervisorSettings,
+    WbcFailureCounter,
     base_height_fault,
     joint_position_fault,
     joint_velocity_fault,
@@ -109,6 +110,7 @@ class SafetyInputs:
     link_errors: dict[str, str] = field(default_factory=dict)  # robot -> LinkLostError text
     solver_failed: bool | None = None  # on ticks where an NMPC update finished
     deadline_missed: bool | None = None  # on ticks where an NMPC update finished
+    loop_overrun: bool = False  # this tick started more than a loop period late
 
 
 class SafetySupervisor:
@@ -129,6 +131,9 @@ class SafetySupervisor:
         self._solver = SolverFailureCounter(settings.max_consecutive_solver_failures)
         self._deadlines = DeadlineOverrunWindow(settings.deadline_overrun_budget,
                                                 settings.deadline_window_s)
+        self._loop_overruns = DeadlineOverrunWindow(
+            settings.loop_overrun_budget, settings.deadline_window_s, "control-loop overruns")
+        self.wbc_failures = WbcFailureCounter(settings.max_consecutive_wbc_failures)
         self._has_been_armed = False
         self._started_standing = False
 
@@ -165,6 +170,13 @@ class SafetySupervisor:
         ignored unless in an active state."""
         if self.state in ACTIVE_STATES:
             self._trip(time_s, cause)
+
+    def wbc_ticked(self, time_s: float, name: str, success: bool, status: int) -> None:
+        """Robot ``name``'s WBC tick: more than ``max_consecutive_wbc_failures`` failed QPs in
+        a row trip the safe stop at once, before the tick's commands are filtered."""
+        cause = self.wbc_failures.update(name, success, status)
+        if cause is not None:
+            self.trigger_safe_stop(time_s, cause)
 
     def _request(self, request: str, time_s: float) -> None:
         allowed, target = _REQUESTS[request]
@@ -223,7 +235,8 @@ class SafetySupervisor:
                 if fault is not None:
                     faults.append(fault)
         for fault in (self._solver.update(inputs.solver_failed),
-                      self._deadlines.update(inputs.time_s, inputs.deadline_missed)):
+                      self._deadlines.update(inputs.time_s, inputs.deadline_missed),
+                      self._loop_overruns.update(inputs.time_s, inputs.loop_overrun)):
             if fault is not None:
                 faults.append(fault)
         return faults

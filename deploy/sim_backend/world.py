@@ -132,11 +132,16 @@ class SimWorld:
         self.config = config
         scene = build_team_scene(
             scenario.team_settings(), payload_true_mass_kg=scenario.true_payload_mass_kg,
-            obstacles=[(*o.position_m, o.radius_m, o.height_m) for o in scenario.obstacles],
+            obstacles=[(*o.position_m, o.radius_m, o.height_m, *o.velocity_m_s)
+                       for o in scenario.obstacles],
             timestep_s=PHYSICS_TIMESTEP_S, payload_height_m=scenario.reference.payload_height_m)
         self.simulation = sim = TeamSimulation(scene, seed=scenario.seed)
         self.robot_types = {agent.name: agent.robot_type for agent in scenario.team}
+        sim.obstacle_origin_s = math.inf  # obstacles wait while the robots are laid down
         lay_down(sim, self.robot_types, config.sim.start_lowering_m)
+        # Moving obstacles start on their paths when the world starts running, not when the
+        # team is armed: porter sees where they are through the MoCap (mocap.obstacle_bodies).
+        sim.obstacle_origin_s = sim.time_s
         self.fakes: dict[str, FakeGo2 | FakeA1] = {}
         self.a1_endpoints: dict[str, tuple[str, int]] = {}
         for name, link in config.robots.items():
@@ -149,10 +154,9 @@ class SimWorld:
                             foot_force_n_per_count=link.foot_force_n_per_count)
                 self.fakes[name] = a1
                 self.a1_endpoints[name] = a1.local_endpoint
-        self.obstacle_bodies = {
-            body: (scene.model.geom_pos[geom_id].copy(), scene.model.geom_quat[geom_id].copy())
-            for body, geom_id in zip(config.mocap.obstacle_bodies, scene.obstacle_geom_ids,
-                                     strict=False) if body is not None}
+        self.obstacle_bodies = {  # Motive body -> obstacle index
+            body: index for index, body in enumerate(config.mocap.obstacle_bodies)
+            if body is not None}
         noise = scenario.disturbances
         mocap = config.mocap
         self.natnet = FakeNatNetServer(
@@ -188,6 +192,10 @@ class SimWorld:
                 self.mocap_stopped = True
             elif fault.kind == "robot_silent" and fault.robot is not None:
                 self.silent.add(fault.robot)
+            elif fault.kind == "robot_frozen" and fault.robot is not None:
+                fake = self.fakes[fault.robot]
+                if isinstance(fake, FakeGo2):  # load_deploy_config allows no other
+                    fake.frozen = True
             self.faults_applied.append({"kind": fault.kind, "robot": fault.robot,
                                         "time_s": self.simulation.time_s})
 
@@ -211,7 +219,8 @@ class SimWorld:
         sim = self.simulation
         poses = {self.config.body_name(name): sim.base_pose(name) for name in self.robot_types}
         poses[self.config.body_name(PAYLOAD_NAME)] = sim.payload_pose()
-        poses.update(self.obstacle_bodies)
+        for body, index in self.obstacle_bodies.items():
+            poses[body] = sim.obstacle_pose(index)
         return poses
 
     def ground_truth(self) -> dict[str, Any]:

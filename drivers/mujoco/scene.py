@@ -13,7 +13,10 @@ Scene contents:
 - coupling (the real mechanism): a small coupler body hinged to the payload about the payload
   z-axis at the payload's coupling point, welded (site weld, 6 DoF) to the robot trunk at the
   robot's coupling point, so relative yaw is free and relative roll/pitch/translation are not;
-- obstacles: static cylinders that collide with nothing (visualization and the CBF only).
+- obstacles: cylinders standing on the ground, each a MuJoCo mocap body (kinematic: it moves
+  on its own constant-velocity path, ``TeamSimulation`` sets its position before every step,
+  and nothing pushes it) that collides with the robots and the payload, so a collision is one
+  in physics too.
 
 ``build_team_scene`` places robots in the SRDF ``standing`` pose where
 ``core.nmpc.reference.robot_state_from_payload`` puts them for a level payload at the origin;
@@ -25,7 +28,7 @@ from __future__ import annotations
 import re
 import xml.etree.ElementTree as ET
 from collections.abc import Sequence
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 
 import mujoco
 import numpy as np
@@ -146,6 +149,13 @@ class TeamScene:
     payload_qvel_address: int
     obstacle_geom_ids: tuple[int, ...]
     initial_qpos: np.ndarray  # robots standing, payload level at the configured height
+    obstacle_mocap_ids: tuple[int, ...] = ()  # each obstacle body's row in data.mocap_pos
+    obstacle_start_m: np.ndarray = field(default_factory=lambda: np.zeros((0, 3)))  # (k, 3)
+    obstacle_velocity_m_s: np.ndarray = field(default_factory=lambda: np.zeros((0, 2)))
+
+    @property
+    def obstacles_move(self) -> bool:
+        return bool(np.any(self.obstacle_velocity_m_s != 0.0))
 
     def robot(self, name: str) -> RobotIndices:
         for robot in self.robots:
@@ -155,7 +165,7 @@ class TeamScene:
 
 
 def build_team_scene(team: TeamSettings, payload_true_mass_kg: float | None = None,
-                     obstacles: Sequence[tuple[float, float, float, float]] = (),
+                     obstacles: Sequence[tuple[float, ...]] = (),
                      timestep_s: float = PHYSICS_TIMESTEP_S,
                      foot_friction: float = DEFAULT_FOOT_FRICTION,
                      payload_height_m: float = 0.45,
@@ -163,7 +173,8 @@ def build_team_scene(team: TeamSettings, payload_true_mass_kg: float | None = No
     """Compile the team's scene with the payload level at (0, 0, ``payload_height_m``), yaw 0.
 
     ``payload_true_mass_kg`` overrides ``team.payload.mass_kg`` (model mismatch on purpose).
-    ``obstacles`` are (x [m], y [m], radius [m], height [m]) cylinders standing on the ground.
+    ``obstacles`` are (x [m], y [m], radius [m], height [m]) cylinders standing on the ground
+    at t = 0, optionally followed by their constant velocity (vx, vy) [m/s].
     ``coupling_time_constant_s`` is the weld's solref time constant (>= 2 timesteps, MuJoCo's
     stability rule).
     """
@@ -176,10 +187,17 @@ def build_team_scene(team: TeamSettings, payload_true_mass_kg: float | None = No
     spec.option.integrator = mujoco.mjtIntegrator.mjINT_IMPLICITFAST
     spec.worldbody.add_geom(name="ground", type=mujoco.mjtGeom.mjGEOM_PLANE, size=[0, 0, 0.05],
                             contype=_ROBOT_BIT | _PAYLOAD_BIT, conaffinity=_ROBOT_BIT | _PAYLOAD_BIT)
-    for i, (x, y, radius, height) in enumerate(obstacles):
-        spec.worldbody.add_geom(name=f"obstacle_{i}", type=mujoco.mjtGeom.mjGEOM_CYLINDER,
-                                size=[radius, height / 2, 0], pos=[x, y, height / 2],
-                                contype=0, conaffinity=0, rgba=[0.8, 0.3, 0.3, 0.6])
+    starts, velocities = [], []
+    for i, obstacle in enumerate(obstacles):
+        if len(obstacle) not in (4, 6):
+            raise ValueError(f"obstacle {i}: (x, y, radius, height[, vx, vy]), got {obstacle}")
+        x, y, radius, height = obstacle[0:4]
+        starts.append((x, y, height / 2))
+        velocities.append(tuple(obstacle[4:6]) if len(obstacle) == 6 else (0.0, 0.0))
+        body = spec.worldbody.add_body(name=f"obstacle_{i}", pos=[x, y, height / 2], mocap=True)
+        body.add_geom(name=f"obstacle_{i}", type=mujoco.mjtGeom.mjGEOM_CYLINDER,
+                      size=[radius, height / 2, 0], contype=_ROBOT_BIT | _PAYLOAD_BIT,
+                      conaffinity=_ROBOT_BIT | _PAYLOAD_BIT, rgba=[0.8, 0.3, 0.3, 0.6])
 
     mass_kg = team.payload.mass_kg if payload_true_mass_kg is None else payload_true_mass_kg
     box_mass_kg = mass_kg - COUPLER_MASS_KG * len(team.agents)
@@ -238,6 +256,10 @@ def build_team_scene(team: TeamSettings, payload_true_mass_kg: float | None = No
         payload_qvel_address=int(payload_joint.dofadr[0]),
         obstacle_geom_ids=tuple(model.geom(f"obstacle_{i}").id for i in range(len(obstacles))),
         initial_qpos=initial_qpos,
+        obstacle_mocap_ids=tuple(int(model.body_mocapid[model.body(f"obstacle_{i}").id])
+                                 for i in range(len(obstacles))),
+        obstacle_start_m=np.array(starts, dtype=float).reshape(-1, 3),
+        obstacle_velocity_m_s=np.array(velocities, dtype=float).reshape(-1, 2),
     )
 
 

@@ -66,6 +66,9 @@ class TeamSimulation:
         self._rng = np.random.default_rng(seed)
         self._commands = {robot.name: JointCommand() for robot in scene.robots}
         self._pushes: list[_Push] = []
+        # the moving obstacles' t = 0 [s of simulated time]; before it they stand at their
+        # starts (the sim backend's world lays the robots down first, then sets it)
+        self.obstacle_origin_s = 0.0
         self._qpos_addresses = np.concatenate([r.leg_qpos_addresses for r in scene.robots])
         self._qvel_addresses = np.concatenate([r.leg_qvel_addresses for r in scene.robots])
         self._actuator_ids = np.concatenate([r.actuator_ids for r in scene.robots])
@@ -126,13 +129,28 @@ class TeamSimulation:
         """Advance ``count`` physics steps, re-evaluating the motor law before each."""
         data = self.data
         torque, position, velocity, kp, kd = self._stacked_command
+        scene = self.scene
+        moving = scene.obstacles_move
         for _ in range(count):
+            if moving:  # kinematic obstacles on their paths at this step's start time
+                data.mocap_pos[list(scene.obstacle_mocap_ids), 0:2] = (
+                    scene.obstacle_start_m[:, 0:2] + scene.obstacle_velocity_m_s
+                    * max(data.time - self.obstacle_origin_s, 0.0))
             self._apply_pushes()
             q = data.qpos[self._qpos_addresses]
             dq = data.qvel[self._qvel_addresses]
             tau = torque + kp * (position - q) + kd * (velocity - dq)
             data.ctrl[self._actuator_ids] = np.clip(tau, self._ctrl_low, self._ctrl_high)
             mujoco.mj_step(self.model, data)
+
+    def obstacle_pose(self, index: int) -> tuple[np.ndarray, np.ndarray]:
+        """Obstacle ``index``'s pose now: centre position [m] and quaternion (w, x, y, z),
+        world frame (on its constant-velocity path)."""
+        scene = self.scene
+        position = scene.obstacle_start_m[index].copy()
+        position[0:2] += (scene.obstacle_velocity_m_s[index]
+                          * max(self.time_s - self.obstacle_origin_s, 0.0))
+        return position, np.array([1.0, 0.0, 0.0, 0.0])
 
     def apply_push(self, body: str, force_world_n: np.ndarray, duration_s: float) -> None:
         """Push ``body`` (a robot name for its trunk, ``"payload"``, or any model body name)

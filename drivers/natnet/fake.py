@@ -283,13 +283,15 @@ def simulation_pose_source(simulation: TeamSimulation,
     """Ground-truth poses of a ``TeamSimulation``: each robot base (by robot name), the
     ``"payload"`` and, optionally, each obstacle geom (by geom name), world frame."""
     scene, model = simulation.scene, simulation.model
-    obstacles = {model.geom(i).name: (model.geom_pos[i].copy(), model.geom_quat[i].copy())
-                 for i in scene.obstacle_geom_ids} if include_obstacles else {}
+    obstacles = [(model.geom(geom).name, index)
+                 for index, geom in enumerate(scene.obstacle_geom_ids)] if include_obstacles \
+        else []
 
     def poses() -> dict[str, Pose]:
         current = {robot.name: simulation.base_pose(robot.name) for robot in scene.robots}
         current[PAYLOAD_NAME] = simulation.payload_pose()
-        current.update(obstacles)
+        for name, index in obstacles:
+            current[name] = simulation.obstacle_pose(index)
         return current
     return poses
 

@@ -167,6 +167,12 @@ class Go2Driver(UnitreeLowLevelDriver):
                 self.link.reject("encoding")
                 continue
             problem = state_problem(state)
+            if problem is None and self.last_state is not None \
+                    and state.tick_ms == self.last_state.tick_ms:
+                # The robot's tick advances with every message: the same tick again is a
+                # frozen state (its sensors or firmware loop stopped), not a fresh one, so a
+                # robot that keeps repeating itself ends in a lost link after the timeout.
+                problem = "frozen tick"
             if problem is not None:
                 self.link.reject(problem)
                 continue

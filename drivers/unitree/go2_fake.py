@@ -79,6 +79,9 @@ class FakeGo2(RealTimeFake):
         self.commands_received = 0
         self.commands_rejected: Counter[str] = Counter()
         self.states_published = 0
+        self.frozen = False  # True: republish the last state unchanged (see publish_state)
+        self._tick_ms = -1
+        self._last_state_bytes: bytes | None = None
         self.last_command: JointCommand | None = None
         self.sport_mode_released = False
         self._runner = PeriodicThread("FakeGo2")
@@ -93,11 +96,20 @@ class FakeGo2(RealTimeFake):
         return bool(self._command_waitset.wait(duration(seconds=timeout_s)))
 
     def publish_state(self) -> None:
-        """Write the simulated robot's current state as a ``LowState_`` (tick = sim time, ms)."""
+        """Write the simulated robot's current state as a ``LowState_``. Its ``tick`` [ms]
+        advances with every message, as the robot's does (simulated time in ms, at least one
+        more than the last); ``frozen`` repeats the last message byte for byte (a robot whose
+        state stopped updating while it keeps publishing)."""
+        if self.frozen and self._last_state_bytes is not None:
+            write_raw(self._state_writer, self._last_state_bytes)
+            self.states_published += 1
+            return
         measurement = self.driver.read()
+        self._tick_ms = max(round(measurement.time_s * 1000.0), self._tick_ms + 1)
         wire = wire_state_from_measurement(measurement, self.foot_force_n_per_count,
-                                           tick_ms=round(measurement.time_s * 1000.0))
-        write_raw(self._state_writer, self._states.encode(wire))
+                                           tick_ms=self._tick_ms)
+        self._last_state_bytes = self._states.encode(wire)
+        write_raw(self._state_writer, self._last_state_bytes)
         self.states_published += 1
 
     def poll_commands(self) -> bool:

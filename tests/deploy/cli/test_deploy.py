@@ -4,6 +4,7 @@ MoCap tracker, the base velocity estimate, pacing) on their own."""
 
 from __future__ import annotations
 
+import re
 import signal
 import subprocess
 import sys
@@ -77,6 +78,8 @@ def test_deploy_on_the_sim_backend_stands_walks_carries_and_sits_down(
     # every decision's outcome is logged, but for one still running when the team sat down
     assert counts["/nmpc/inputs"] - counts["/nmpc/update"] in (0, 1)
     assert log.metadata()["porter"]["backend"] == "sim"
+    as_run = yaml.safe_load(log.attachment_text("deploy_config.yaml"))
+    assert as_run["scenario"] == "two_go2" and as_run["nmpc"]["runner"] == "process"
     # walked and carried: the payload moved toward the goal (MoCap), nobody fell (truth)
     assert summary["payload"]["progress_toward_goal_m"] > 0.9 * np.hypot(4.2, 0.35)
     truth = summary["sim_ground_truth"]
@@ -121,7 +124,8 @@ FAULT_AT_S = 3.0  # simulated s after the world starts: running by then (stand-u
     ({"kind": "estop_press"}, "e-stop: run not allowed (e-stop pressed", 0.05),
     ({"kind": "mocap_loss"}, "MoCap lost: no frame for", 0.1 + 0.05),
     ({"kind": "robot_silent", "robot": "go2_1"}, "robot link lost: go2_1", 0.1 + 0.05),
-], ids=["estop", "mocap", "link"])
+    ({"kind": "robot_frozen", "robot": "go2_0"}, "'frozen tick'", 0.1 + 0.05),
+], ids=["estop", "mocap", "link", "frozen"])
 def test_a_fault_while_running_leaves_only_damping_reaching_the_motors(
         tmp_path: Path, capsys: pytest.CaptureFixture[str], fault: dict, cause: str,
         reaction_s: float) -> None:
@@ -262,6 +266,38 @@ def test_the_nmpc_executor_overrides_the_scenario_default_and_conflicts_are_name
     path.write_text(yaml.safe_dump(data))
     with pytest.raises(ConfigError, match="nmpc.runner"):
         load_deploy_config(path)
+
+
+@pytest.mark.parametrize(("section", "values", "field"), [
+    ("safety", {"damping_kd": 0.0}, "safety.damping_kd"),
+    ("safety", {"max_tilt_rad": 100.0}, "safety.max_tilt_rad"),
+    ("safety", {"max_consecutive_solver_failures": 1000000000},
+     "safety.max_consecutive_solver_failures"),
+    ("safety", {"mocap_timeout_s": float("inf")}, "safety.mocap_timeout_s"),
+    ("rates", {"max_plan_age_s": float("nan")}, "rates.max_plan_age_s"),
+    ("mocap", {"stale_timeout_s": 30.0}, "mocap.stale_timeout_s"),
+    ("posture", {"kd": 0.0}, "posture.kd"),
+    ("safety", {"deadline_overrun_budget": 200}, "deadline_overrun_budget 200 can never"),
+])
+def test_configs_cannot_switch_safety_off(tmp_path: Path, section: str, values: dict,
+                                          field: str) -> None:
+    """Every float finite, every timeout, gain and budget within its physical range: the
+    message names the field and the range."""
+    path = _config(tmp_path, **{section: values})
+    with pytest.raises(ConfigError, match=re.escape(field)) as error:
+        load_deploy_config(path)
+    assert any(word in str(error.value) for word in ("less than", "greater than", "finite",
+                                                      "never be used up"))
+
+
+@pytest.mark.parametrize("duration", ["-1", "0", "inf", "nan", "soon"])
+def test_command_line_numbers_are_validated(duration: str,
+                                            capsys: pytest.CaptureFixture[str]) -> None:
+    with pytest.raises(SystemExit) as exit_info:
+        main(["deploy", "--config", str(TWO_GO2), "--backend", "sim", "--yes",
+              "--duration", duration])
+    assert exit_info.value.code == 2
+    assert "argument --duration" in capsys.readouterr().err
 
 
 def test_shipped_configs_load() -> None:

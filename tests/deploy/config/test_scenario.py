@@ -254,6 +254,10 @@ BAD = [
      r"controller\.mode: .*'distributed', 'centralized' or 'wrench-only'"),
     ("bad duty factor", lambda d: d.update(gait={"duty_factor": 1.0}), r"gait\.duty_factor: "),
     ("missing duration", lambda d: d.pop("duration_s"), r"duration_s: Field required"),
+    ("NaN payload mass", lambda d: d["payload"].update(mass_kg=float("nan")),
+     r"payload\.mass_kg: .*finite"),
+    ("infinite obstacle speed", lambda d: d["obstacles"][0].update(
+        velocity_m_s=[float("inf"), 0.0]), r"obstacles\.0\.velocity_m_s\.0: .*finite"),
 ]
 
 

@@ -216,3 +216,42 @@ def test_log_info_prints_topics_and_summary(recorded_run: tuple[Path, list, dict
     assert main(["log", "info", str(recorded_run[0])]) == 0
     out = capsys.readouterr().out
     assert "/nmpc/update" in out and "500.0" in out and "nmpc_updates: 24" in out
+
+
+def test_chunks_carry_data_crcs_and_a_corrupted_one_is_caught(tmp_path: Path) -> None:
+    from mcap.records import Chunk
+    from mcap.stream_reader import StreamReader
+
+    path = tmp_path / "crc.mcap"
+    with FlightRecorder(path, metadata={fmt.RUN_METADATA: {"log_format_version": str(
+            fmt.LOG_FORMAT_VERSION)}}) as recorder:
+        for i in range(200):
+            recorder.log("/x", pb.Event(text=f"event {i}"), i * 1e-3)
+    with open(path, "rb") as stream:
+        chunks = [r for r in StreamReader(stream, validate_crcs=True).records
+                  if isinstance(r, Chunk)]
+    assert chunks and all(chunk.uncompressed_crc != 0 for chunk in chunks)
+    data = bytearray(path.read_bytes())
+    # flip one byte inside the first chunk's compressed records
+    offset = bytes(data).find(chunks[0].data)
+    assert offset > 0
+    data[offset + len(chunks[0].data) // 2] ^= 0xFF
+    broken = tmp_path / "broken.mcap"
+    broken.write_bytes(bytes(data))
+    with open(broken, "rb") as stream, pytest.raises(Exception):  # noqa: B017, PT011
+        for record in StreamReader(stream, validate_crcs=True).records:
+            if isinstance(record, Chunk):
+                pass
+
+
+def test_default_log_names_are_unique_and_stay_in_their_folder(tmp_path: Path) -> None:
+    from deploy.recording.run_record import default_log_path, safe_file_stem
+
+    scenario = load_scenario("two_go2")
+    paths = [default_log_path(scenario, tmp_path) for _ in range(3)]
+    assert len(set(paths)) == 3 and all(p.exists() and p.parent == tmp_path for p in paths)
+    assert paths[0].name.startswith("two_go2-") and paths[1].stem.endswith("-2")
+    escaping = scenario.model_copy(update={"name": "../../etc/passwd"})
+    path = default_log_path(escaping, tmp_path / "runs", prefix="deploy-")
+    assert path.parent == tmp_path / "runs" and path.name.startswith("deploy-_.._etc_passwd-")
+    assert safe_file_stem("..") == "run" and safe_file_stem("a b/c") == "a_b_c"

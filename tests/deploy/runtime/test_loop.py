@@ -136,3 +136,45 @@ def test_paced_clock_runs_the_deploy_sequence_on_the_simulation() -> None:
     assert running and all(not c.kp.any() and c.torque_nm.any() for c in running)  # WBC
     sitting = [c for t, c in tapped.sent if t > loop.since[loop.supervisor.state.SITTING_DOWN]]
     assert sitting and all(c.kp.any() for c in sitting[:100])  # the posture PD
+
+
+def test_armed_without_a_first_plan_for_too_long_is_a_safe_stop() -> None:
+    """The NMPC never delivers a plan (every update raises): the team may not stand armed
+    forever; ``rates.max_armed_s`` after arming the supervisor stops it."""
+    run = SimRun(_scenario(0.2), CompiledCodeCache())
+    sim = run.simulation
+    clock_s = [0.0]
+
+    def sleep(seconds: float) -> None:
+        steps = int(round(seconds / sim.timestep_s))
+        sim.step(steps)
+        clock_s[0] += steps * sim.timestep_s
+
+    def clock() -> float:
+        return clock_s[0]
+
+    def no_plan(decision: object) -> None:
+        raise RuntimeError("the solver never converges")
+
+    control = run.control
+    control.update = no_plan  # type: ignore[method-assign]
+    nmpc = NmpcSchedule(control, LockstepNmpc(control, clock, True, 0.02), 60.0, clock, None,
+                        run.links.force_torque, has_deadline=True)
+    settings = LoopSettings(RatesConfig(max_armed_s=0.1),
+                            SupervisorSettings(max_consecutive_solver_failures=30),
+                            PostureConfig(stand_up_s=0.2, settle_s=0.05, sit_down_s=0.3,
+                                          final_damping_s=0.05))
+    ok = PreflightReport([PreflightCheck("simulation", True, "in process")])
+    loop = ControlLoop(control, run.links, settings, PacedClock(0.002, clock, sleep), nmpc, None,
+                       lambda: False, 0.2, "deploy", confirm=lambda: True,
+                       preflight=lambda measurements, errors: ok, verbose=False)
+    try:
+        loop.run("start: test")
+    finally:
+        run.close()
+    outcome = loop.outcome()
+    assert "no NMPC plan" in outcome["safe_stop"] and "(max 0.1 s)" in outcome["safe_stop"]
+    armed_s = loop.since[loop.supervisor.state.ARMED]
+    stopped_s = loop.since[loop.supervisor.state.SAFE_STOP]
+    assert 0.1 < stopped_s - armed_s <= 0.1 + 0.004
+    assert outcome["nmpc_failed_updates"] >= 5 and loop.nmpc.plan is None

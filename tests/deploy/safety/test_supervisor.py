@@ -435,6 +435,43 @@ def test_consecutive_solver_failures_trip_and_a_success_resets(limits, standing)
     _assert_latched_damping(supervisor, time_s, standing)
 
 
+def test_consecutive_wbc_failures_of_one_robot_trip_at_once(limits, standing):
+    """A failed QP repeats the robot's last torques: allowed for ``max`` ticks in a row, the
+    next one stops the team in the same tick (before its commands are filtered)."""
+    settings = SupervisorSettings(max_consecutive_wbc_failures=2)
+    supervisor, time_s = _supervisor_in(S.RUNNING, limits, standing, settings)
+    first, second = (robot.name for robot in limits)
+    # failures alternate between robots, or are broken by a solved tick: never a streak of 3
+    for success_first, success_second in [(False, True), (False, False), (True, False),
+                                          (False, True), (True, True), (False, True),
+                                          (False, True)]:
+        time_s += TICK_S
+        supervisor.check(_inputs(time_s, standing))
+        supervisor.wbc_ticked(time_s, first, success_first, 1 if success_first else -3)
+        supervisor.wbc_ticked(time_s, second, success_second, 1 if success_second else -3)
+        assert supervisor.state == S.RUNNING
+    time_s += TICK_S
+    supervisor.wbc_ticked(time_s, first, False, -3)  # first's third failure in a row
+    assert supervisor.state == S.SAFE_STOP
+    assert f"WBC failed: {first}'s QP failed 3 consecutive ticks (status -3; max 2)" \
+        in supervisor.fault
+    assert supervisor.wbc_failures.failed_ticks == 8
+    _assert_latched_damping(supervisor, time_s, standing)
+
+
+@pytest.mark.parametrize(("late_ticks", "trips"), [(4, False), (5, True)])
+def test_loop_overruns_count_within_the_window(limits, standing, late_ticks, trips):
+    settings = SupervisorSettings(loop_overrun_budget=4, deadline_window_s=1.0)
+    supervisor, time_s = _supervisor_in(S.RUNNING, limits, standing, settings)
+    for tick in range(400):  # 0.8 s
+        time_s += TICK_S
+        state = supervisor.check(_inputs(time_s, standing,
+                                         loop_overrun=tick % 80 == 0 and tick // 80 < late_ticks))
+    assert (state == S.SAFE_STOP) == trips
+    if trips:
+        assert "control-loop overruns: 5 within 1.0 s (budget 4)" in supervisor.fault
+
+
 @pytest.mark.parametrize(("overruns", "spacing_ticks", "trips"), [
     (6, 50, True),  # 6 within 0.5 s
     (5, 5, False),  # exactly the budget

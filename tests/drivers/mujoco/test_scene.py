@@ -122,9 +122,16 @@ def test_foot_friction_and_obstacles(mixed_scene):
     obstacles = mixed_scene.obstacle_geom_ids
     assert len(obstacles) == 2
     np.testing.assert_allclose(model.geom_size[obstacles[1]][:2], [0.15, 0.4])
-    np.testing.assert_allclose(model.geom_pos[obstacles[1]], [2.2, -0.6, 0.4])
-    assert not any(model.geom_contype[list(obstacles)]) and not any(
-        model.geom_conaffinity[list(obstacles)])
+    body = model.geom_bodyid[obstacles[1]]
+    np.testing.assert_allclose(model.body_pos[body], [2.2, -0.6, 0.4])
+    assert model.body_mocapid[body] == mixed_scene.obstacle_mocap_ids[1] >= 0  # kinematic
+    assert not mixed_scene.obstacles_move
+    # they collide with the robots and the payload
+    robot_geom = mixed_scene.robots[0].foot_geom_ids[0]
+    payload_geom = model.body_geomadr[mixed_scene.payload_body_id]
+    for other in (robot_geom, payload_geom):
+        assert (model.geom_contype[obstacles[1]] & model.geom_conaffinity[other]) or (
+            model.geom_contype[other] & model.geom_conaffinity[obstacles[1]])
 
 
 def test_initial_configuration_is_standing_at_the_reference(mixed_team, mixed_scene):

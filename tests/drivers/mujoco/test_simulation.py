@@ -260,3 +260,37 @@ def test_push_moves_the_pushed_body(scene):
     assert shift_m[0] > 0.005
     assert abs(shift_m[1]) < 0.2 * shift_m[0]
     assert not pushed.data.xfrc_applied.any()  # the push ended after 0.1 s
+
+
+def test_a_moving_obstacle_follows_its_path_and_pushes_what_it_meets(team):
+    """A kinematic cylinder crossing the payload at 0.5 m/s: on its path at every step (from
+    ``obstacle_origin_s`` on), and the payload it runs into is pushed (a real contact)."""
+    scene = build_team_scene(team, obstacles=[(0.0, 1.2, 0.1, 1.0, 0.0, -0.5),
+                                              (3.0, 3.0, 0.2, 0.5)])
+    assert scene.obstacles_move
+    simulation = TeamSimulation(scene)
+    simulation.obstacle_origin_s = 0.2
+    mocap = scene.obstacle_mocap_ids
+    payload_geom = scene.model.body_geomadr[scene.payload_body_id]
+    touched_at_s = None
+    while simulation.time_s < 2.0 and touched_at_s is None:
+        simulation.step(10)
+        moved_s = max(simulation.time_s - 0.2, 0.0)
+        expected = np.array([0.0, 1.2 - 0.5 * moved_s, 0.5])
+        position, quaternion = simulation.obstacle_pose(0)
+        np.testing.assert_allclose(position, expected, atol=1e-9)
+        np.testing.assert_allclose(quaternion, [1.0, 0.0, 0.0, 0.0])
+        # mocap_pos was set at the last step's start: 1 ms behind the pose now
+        np.testing.assert_allclose(simulation.data.mocap_pos[mocap[0]][1],
+                                   expected[1] + 0.5 * 0.001 * (moved_s > 0), atol=1e-9)
+        np.testing.assert_allclose(simulation.obstacle_pose(1)[0], [3.0, 3.0, 0.25])
+        contacts = simulation.data.contact[:simulation.data.ncon]
+        if any(payload_geom in (c.geom1, c.geom2) and scene.obstacle_geom_ids[0] in
+               (c.geom1, c.geom2) for c in contacts):
+            touched_at_s = simulation.time_s
+    assert touched_at_s is not None  # the cylinder reached the payload's edge (y = 0.x)
+    simulation.step(100)
+    payload_velocity = simulation.data.qvel[scene.payload_qvel_address:
+                                            scene.payload_qvel_address + 3]
+    position, _ = simulation.payload_pose()
+    assert position[1] < -0.01 or payload_velocity[1] < -0.05  # pushed along -y

@@ -6,6 +6,7 @@ from __future__ import annotations
 
 import itertools
 import os
+import time
 
 import mujoco
 import numpy as np
@@ -211,6 +212,41 @@ def test_link_lost_then_recovered(link):
     fake.publish_state()
     driver.read()
     assert driver.link.reconnections == 1
+
+
+def _deliver(driver: Go2Driver, count: int) -> int:
+    """Poll until ``count`` messages (valid or rejected) more have arrived; valid ones."""
+    seen = driver.link.received + driver.link.rejected_total + count
+    valid = 0
+    deadline = time.monotonic() + 2.0
+    while driver.link.received + driver.link.rejected_total < seen:
+        assert time.monotonic() < deadline, "states did not arrive"
+        valid += driver.poll()
+        time.sleep(0.001)
+    return valid
+
+
+def test_a_frozen_state_is_a_lost_link_and_a_fresh_one_recovers(link):
+    """The fake's tick advances with every message, even with the simulation standing still;
+    a robot repeating its last message (same tick) is not heard from, so the link times out."""
+    _, fake, driver, _ = link
+    ticks = []
+    for _ in range(3):
+        fake.publish_state()  # simulated time does not move between these
+        assert _deliver(driver, 1) == 1
+        ticks.append(driver.last_state.tick_ms)
+    assert ticks[0] < ticks[1] < ticks[2]
+    fake.frozen = True
+    for _ in range(3):
+        fake.publish_state()
+    assert _deliver(driver, 3) == 0 and driver.link.rejected["frozen tick"] == 3
+    driver.clock.now_s += 0.2
+    with pytest.raises(LinkLostError, match=r"rejected \{'frozen tick': 3\}"):
+        driver.read()
+    fake.frozen = False
+    fake.publish_state()
+    assert _deliver(driver, 1) == 1
+    assert driver.read().position_rad.shape == (12,) and driver.link.reconnections == 1
 
 
 def test_no_state_yet_is_link_lost(scene):
