@@ -220,7 +220,7 @@ def test_log_info_prints_topics_and_summary(recorded_run: tuple[Path, list, dict
 
 def test_chunks_carry_data_crcs_and_a_corrupted_one_is_caught(tmp_path: Path) -> None:
     from mcap.records import Chunk
-    from mcap.stream_reader import StreamReader
+    from mcap.stream_reader import CRCValidationError, StreamReader
 
     path = tmp_path / "crc.mcap"
     with FlightRecorder(path, metadata={fmt.RUN_METADATA: {"log_format_version": str(
@@ -228,7 +228,7 @@ def test_chunks_carry_data_crcs_and_a_corrupted_one_is_caught(tmp_path: Path) ->
         for i in range(200):
             recorder.log("/x", pb.Event(text=f"event {i}"), i * 1e-3)
     with open(path, "rb") as stream:
-        chunks = [r for r in StreamReader(stream, validate_crcs=True).records
+        chunks = [r for r in StreamReader(stream, emit_chunks=True, validate_crcs=True).records
                   if isinstance(r, Chunk)]
     assert chunks and all(chunk.uncompressed_crc != 0 for chunk in chunks)
     data = bytearray(path.read_bytes())
@@ -238,10 +238,9 @@ def test_chunks_carry_data_crcs_and_a_corrupted_one_is_caught(tmp_path: Path) ->
     data[offset + len(chunks[0].data) // 2] ^= 0xFF
     broken = tmp_path / "broken.mcap"
     broken.write_bytes(bytes(data))
-    with open(broken, "rb") as stream, pytest.raises(Exception):  # noqa: B017, PT011
-        for record in StreamReader(stream, validate_crcs=True).records:
-            if isinstance(record, Chunk):
-                pass
+    with open(broken, "rb") as stream, pytest.raises(CRCValidationError, match="Chunk"):
+        for _ in StreamReader(stream, validate_crcs=True).records:
+            pass
 
 
 def test_default_log_names_are_unique_and_stay_in_their_folder(tmp_path: Path) -> None:

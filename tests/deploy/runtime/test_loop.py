@@ -177,4 +177,4 @@ def test_armed_without_a_first_plan_for_too_long_is_a_safe_stop() -> None:
     armed_s = loop.since[loop.supervisor.state.ARMED]
     stopped_s = loop.since[loop.supervisor.state.SAFE_STOP]
     assert 0.1 < stopped_s - armed_s <= 0.1 + 0.004
-    assert outcome["nmpc_failed_updates"] >= 5 and loop.nmpc.plan is None
+    assert outcome["nmpc_failed_updates"] >= 2 and loop.nmpc.plan is None
