@@ -41,6 +41,7 @@ from deploy.runtime.nmpc_thread import NmpcThread
 from deploy.runtime.stop_request import StopRequest
 from deploy.safety.preflight import PreflightReport, evaluate
 from deploy.safety.supervisor import SafetyState
+from deploy.safety.watchdog import Watchdog, WatchdogSpec
 from deploy.sim_backend.backend import SimBackend
 from drivers.interfaces import RobotMeasurement
 
@@ -91,6 +92,7 @@ def run_deploy(args: argparse.Namespace) -> int:
     recorder: FlightRecorder | None = None
     links = None
     loop: ControlLoop | None = None
+    watchdog: Watchdog | None = None
     stop = StopRequest()
     # The loop shares the interpreter lock with the recorder, MoCap and CAN threads (and the
     # NMPC's with ``nmpc.runner: thread``): a
@@ -107,6 +109,10 @@ def run_deploy(args: argparse.Namespace) -> int:
         if backend is not None:
             config = backend.config  # the links to the fakes, sim.safety_overrides applied
         links = open_links(config, clock)
+        if config.watchdog.enabled:
+            watchdog = Watchdog(WatchdogSpec.of(
+                config, config.sim.time_scale if backend is not None else 1.0))
+            say("watchdog running (damping to every robot if the loop stops)")
         if not args.no_record:
             path = (Path(args.record) if args.record
                     else default_log_path(scenario, prefix="deploy-"))
@@ -118,7 +124,7 @@ def run_deploy(args: argparse.Namespace) -> int:
         if runner is not None:
             runner.clock = clock
         loop = deploy_loop(config, control, links, recorder, OperatorPrompt(args.yes), stop,
-                           duration_s, clock, sleep, runner)
+                           duration_s, clock, sleep, runner, watchdog)
         with stop.installed():
             loop.run(f"start: porter deploy, scenario {scenario.name}")
     finally:
@@ -126,6 +132,10 @@ def run_deploy(args: argparse.Namespace) -> int:
         summary = None
         if loop is not None:
             summary = deploy_summary(loop, args, backend)
+            summary["watchdog"] = {"enabled": watchdog is not None,
+                                   "tripped": watchdog is not None and watchdog.tripped}
+        if watchdog is not None:
+            watchdog.disarm()
         if recorder is not None:
             recorder.close(summary)
         if links is not None:
@@ -148,7 +158,8 @@ def deploy_loop(config: DeployConfig, control: TeamController, links: TeamLinks,
                 stop: Callable[[], bool], duration_s: float,
                 clock: Callable[[], float] = time.monotonic,
                 sleep: Callable[[float], None] = time.sleep,
-                runner: NmpcRunner | None = None) -> ControlLoop:
+                runner: NmpcRunner | None = None,
+                watchdog: Watchdog | None = None) -> ControlLoop:
     """The control loop on the paced clock, through the deploy sequence (pre-flight, stand
     up, arm, run, sit down), the NMPC in ``runner`` (default: a thread of this process)."""
     recording = None if recorder is None else control.loop_recording(recorder)
@@ -165,7 +176,7 @@ def deploy_loop(config: DeployConfig, control: TeamController, links: TeamLinks,
     loop = ControlLoop(control, links, settings, PacedClock(1.0 / config.rates.wbc_hz, clock,
                                                             sleep),
                        nmpc, recording, stop, duration_s, "deploy", confirm, preflight,
-                       hooks=RunningCpu(lambda: loop.supervisor.state))
+                       hooks=RunningCpu(lambda: loop.supervisor.state), watchdog=watchdog)
     return loop
 
 

@@ -27,6 +27,7 @@ from deploy.config.files import ConfigError, load_settings
 from deploy.config.scenario import Scenario, load_scenario, scenario_path, shipped_scenarios
 from deploy.recording.flight_recorder import RecorderSettings
 from deploy.safety.supervisor import SupervisorSettings
+from deploy.safety.watchdog import WatchdogSettings
 from drivers.natnet.protocol import COMMAND_PORT, DATA_PORT, MULTICAST_GROUP
 
 CONFIG_DIR = Path(__file__).parent / "deployments"
@@ -156,6 +157,9 @@ class SimConfig(StrictModel):
     force_torque_rate_hz: float = Field(100.0, gt=0)
     state_rate_hz: float = Field(500.0, gt=0)  # LowState per robot (Go2: 500 Hz)
     start_lowering_m: float = Field(0.1, ge=0.0, le=0.2)  # robots start crouched this much
+    # The robots' firmware when commands stop: None holds the last command forever (the unsafe
+    # case, as a Go2 does); a value [s]: joint damping once no command came for that long.
+    firmware_command_timeout_s: float | None = Field(None, gt=0, le=1.0)
     # ``safety`` fields replaced for this backend only (e.g. budgets this machine cannot meet)
     safety_overrides: dict[str, float | int] = {}
     # faults for tests: what the fake world leaves out
@@ -177,6 +181,7 @@ class DeployConfig(StrictModel):
     posture: PostureConfig = PostureConfig()
     rates: RatesConfig = RatesConfig()
     nmpc: NmpcRunConfig = NmpcRunConfig()
+    watchdog: WatchdogSettings = WatchdogSettings()
     preflight: PreflightConfig = PreflightConfig()
     recorder: RecorderSettings = RecorderSettings()
     sim: SimConfig = SimConfig()

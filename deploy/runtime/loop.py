@@ -50,7 +50,7 @@ from deploy.safety.supervisor import SafetyInputs, SafetyState, SafetySupervisor
 from drivers.interfaces import JointCommand, MocapFrame, RobotMeasurement
 from drivers.link_errors import DriverError, LinkLostError
 
-__all__ = ["ControlLoop", "LoopHooks", "LoopSettings", "SATURATION_MARGIN"]
+__all__ = ["ControlLoop", "Heartbeat", "LoopHooks", "LoopSettings", "SATURATION_MARGIN"]
 
 SATURATION_MARGIN = 0.25  # commands up to 25 % past a torque limit are clipped to it
 Confirm = Callable[[], bool | None]  # None while the operator has not answered
@@ -66,6 +66,14 @@ class LoopSettings:
     safety: SupervisorSettings
     posture: PostureConfig
     preflight_timeout_s: float = 5.0
+
+
+class Heartbeat(Protocol):
+    """The watchdog outside this process (``deploy.safety.watchdog``)."""
+
+    def beat(self) -> None: ...
+    @property
+    def tripped(self) -> bool: ...
 
 
 class LoopHooks(Protocol):
@@ -84,11 +92,12 @@ class ControlLoop:
                  sequence: Literal["deploy", "standing"] = "deploy",
                  confirm: Confirm | None = None, preflight: Preflight | None = None,
                  hooks: LoopHooks | None = None, out: TextIO | None = None,
-                 verbose: bool = True) -> None:
+                 verbose: bool = True, watchdog: Heartbeat | None = None) -> None:
         self.control, self.links, self.settings, self.clock = control, links, settings, clock
         self.nmpc, self.recording, self.stop, self.duration_s = nmpc, recording, stop, duration_s
         self.sequence, self.confirm, self.preflight = sequence, confirm, preflight
         self.hooks, self.out, self.verbose = hooks, out, verbose
+        self.watchdog = watchdog
         self.names = control.robot_names
         types = {robot.name: robot.robot_type for robot in control.robots}
         self.limits = {name: robot_limits(types[name], name) for name in self.names}
@@ -165,6 +174,11 @@ class ControlLoop:
         stages.start()
         start = self.clock.now()
         t = start - self.t0
+        if self.watchdog is not None:
+            self.watchdog.beat()
+            if self.watchdog.tripped:  # it saw this loop late: it is sending damping already
+                self.supervisor.trigger_safe_stop(
+                    t, "watchdog took over: the loop's heartbeat was late")
         if self.hooks is not None:
             self.hooks.before_tick(t)
         measurements, link_errors = self._read()

@@ -1,0 +1,137 @@
+"""The watchdog outside the control process, against Go2 fakes on real DDS: after kill -9 of
+the loop's process, or a loop that stops beating, every robot gets damping-only commands
+within 50 ms; a clean end sends nothing."""
+
+from __future__ import annotations
+
+import multiprocessing as mp
+import os
+import signal
+import time
+
+import numpy as np
+import pytest
+
+from core.plant.standard_scenarios import ring_team_settings
+from deploy.config.deploy_config import DeployConfig, Go2Link, load_deploy_config
+from deploy.safety.watchdog import Watchdog, WatchdogSpec
+from drivers.interfaces import JointCommand
+from drivers.mujoco.scene import build_team_scene
+from drivers.mujoco.simulation import TeamSimulation
+from drivers.robot_descriptions import srb_parameters
+from drivers.unitree.go2_driver import Go2Driver
+from drivers.unitree.go2_fake import FakeGo2
+
+DOMAIN_ID = 64
+HOLD_TORQUE_NM = 1.5  # what the "loop" keeps commanding: the torque that must not stay on
+
+
+def _config(prefix: str) -> DeployConfig:
+    config, _ = load_deploy_config("two_go2")
+    robots = {name: Go2Link(driver="go2", domain_id=DOMAIN_ID, topic_prefix=f"{prefix}_{name}")
+              for name in config.robots}
+    return config.model_copy(update={"robots": robots})
+
+
+@pytest.fixture
+def team() -> tuple[DeployConfig, dict[str, FakeGo2]]:
+    """Two Go2 fakes (on one simulation) on topics of their own, and the config naming them."""
+    prefix = f"wd{os.getpid()}_{time.monotonic_ns() % 100000}"
+    config = _config(prefix)
+    scene = build_team_scene(ring_team_settings(["go2", "go2"], srb_parameters))
+    simulation = TeamSimulation(scene)
+    fakes = {name: FakeGo2(simulation.robot_driver(robot.name), DOMAIN_ID,
+                           topic_prefix=f"{prefix}_{name}")
+             for name, robot in zip(config.robots, scene.robots, strict=True)}
+    yield config, fakes
+    for fake in fakes.values():
+        fake.close()
+
+
+def _is_damping(command: JointCommand) -> bool:
+    return (not command.kp.any() and not command.torque_nm.any()
+            and bool(np.all(command.kd > 0.0)))
+
+
+def _observe(fakes: dict[str, FakeGo2], seconds: float) -> list[tuple[float, str, JointCommand]]:
+    """Every newest command the fakes apply in the next ``seconds`` (polled every ~0.5 ms)."""
+    seen = []
+    end = time.monotonic() + seconds
+    while time.monotonic() < end:
+        for name, fake in fakes.items():
+            if fake.poll_commands():
+                assert fake.last_command is not None
+                seen.append((time.monotonic(), name, fake.last_command))
+        time.sleep(0.0005)
+    return seen
+
+
+def _a_loop(config: DeployConfig, ready: mp.Event) -> None:  # type: ignore[valid-type]
+    """The control loop's stand-in (a process of its own): the watchdog, a heartbeat and a
+    torque command to every robot every 2 ms, until killed."""
+    watchdog = Watchdog(WatchdogSpec.of(config))
+    drivers = [Go2Driver(name, link.domain_id, None, link.topic_prefix)
+               for name, link in config.robots.items()]
+    command = JointCommand(torque_nm=np.full(12, HOLD_TORQUE_NM))
+    ready.set()
+    while True:
+        watchdog.beat()
+        for driver in drivers:
+            driver.send(command)
+        time.sleep(0.002)
+
+
+def test_kill_9_of_the_loop_leaves_only_damping_within_50_ms(team) -> None:
+    config, fakes = team
+    context = mp.get_context("spawn")
+    ready = context.Event()
+    loop = context.Process(target=_a_loop, args=(config, ready), daemon=True)
+    loop.start()
+    try:
+        assert ready.wait(60.0), "the loop's stand-in did not start"
+        before = _observe(fakes, 0.3)
+        assert {name for _, name, _ in before} == set(fakes)  # the loop's torques arrive
+        assert all(c.torque_nm[0] == pytest.approx(HOLD_TORQUE_NM) for _, _, c in before)
+        os.kill(loop.pid, signal.SIGKILL)
+        killed_s = time.monotonic()
+        after = _observe(fakes, 0.3)
+    finally:
+        loop.kill()
+        loop.join(5.0)
+    for name in fakes:
+        applied = [(t, c) for t, n, c in after if n == name]
+        first_damping = next(t for t, c in applied if _is_damping(c))
+        assert first_damping - killed_s <= 0.050, (name, first_damping - killed_s)
+        # nothing but damping once the first damping command arrived (the loop's last
+        # torques may still be in flight before it)
+        assert all(_is_damping(c) for t, c in applied if t >= first_damping), name
+        assert len([t for t, c in applied if t >= first_damping]) > 50  # it keeps damping
+
+
+def test_a_loop_that_stops_beating_is_taken_over_and_a_clean_end_sends_nothing(team) -> None:
+    config, fakes = team
+    watchdog = Watchdog(WatchdogSpec.of(config))
+    try:
+        for _ in range(50):  # 0.1 s of a healthy loop: nothing from the watchdog
+            watchdog.beat()
+            time.sleep(0.002)
+        assert not watchdog.tripped
+        assert _observe(fakes, 0.01) == []
+        stopped_s = time.monotonic()  # the loop hangs: no more beats
+        after = _observe(fakes, 0.2)
+        assert watchdog.tripped and watchdog.alive
+        for name in fakes:
+            damping = [t for t, n, c in after if n == name and _is_damping(c)]
+            assert damping and damping[0] - stopped_s <= 0.050
+            assert len(damping) == len([1 for _, n, _ in after if n == name])
+    finally:
+        watchdog.disarm()
+    assert not watchdog.alive
+    _observe(fakes, 0.05)  # drain what was in flight
+    assert _observe(fakes, 0.1) == []  # disarmed: the damping stream stopped
+    quiet = Watchdog(WatchdogSpec.of(config))
+    for _ in range(20):
+        quiet.beat()
+        time.sleep(0.002)
+    quiet.disarm()
+    assert not quiet.tripped and _observe(fakes, 0.1) == []
