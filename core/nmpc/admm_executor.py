@@ -1,6 +1,6 @@
 """Where ADMM local solves run. The algorithm hands over plain arrays and gets solutions back,
-so the same code runs serially, in worker processes (``deploy.runtime.process_executor``) or, later,
-on separate machines."""
+so the same code runs serially, in worker processes
+(``deploy.nmpc_runtime.process_executor``) or, later, on separate machines."""
 
 from __future__ import annotations
 

@@ -25,8 +25,8 @@ from core.nmpc.warm_start import initial_guess
 from core.plant.closed_loop import ClosedLoopResult, run_closed_loop
 from core.plant.standard_scenarios import standard_scenario
 from deploy.bench.rti_fidelity import RtiFidelity, rti_fidelity
+from deploy.nmpc_runtime.process_executor import ProcessExecutor
 from deploy.runtime.codegen_cache import CompiledCodeCache
-from deploy.runtime.process_executor import ProcessExecutor
 from drivers.robot_descriptions import srb_parameters
 
 GENERIC_SUFFIX = "/generic-blas"  # label of the rows on CasADi's generic BLASFEO

@@ -26,6 +26,9 @@ import yaml
 from core.model.conventions import PAYLOAD_NAME
 from deploy.config.deploy_config import DeployConfig, load_deploy_config
 from deploy.config.files import ConfigError
+from deploy.nmpc_runtime.nmpc_process import NmpcProcess
+from deploy.nmpc_runtime.nmpc_schedule import NmpcRunner, NmpcSchedule
+from deploy.nmpc_runtime.nmpc_thread import NmpcThread
 from deploy.recording.flight_recorder import FlightRecorder
 from deploy.recording.log_format import DEPLOY_CONFIG_ATTACHMENT
 from deploy.recording.run_record import default_log_path, open_run_recorder
@@ -35,9 +38,6 @@ from deploy.runtime.controller import TeamController
 from deploy.runtime.cpu_meter import RunningCpu, cpu_seconds
 from deploy.runtime.links import TeamLinks, open_links
 from deploy.runtime.loop import ControlLoop, LoopSettings
-from deploy.runtime.nmpc_process import NmpcProcess
-from deploy.runtime.nmpc_schedule import NmpcRunner, NmpcSchedule
-from deploy.runtime.nmpc_thread import NmpcThread
 from deploy.runtime.stop_request import StopRequest
 from deploy.safety.preflight import PreflightReport, evaluate
 from deploy.safety.supervisor import SafetyState

@@ -1,4 +1,4 @@
-"""The control loop: time, the team controller, NMPC scheduling, links and workers.
+"""The control loop: time, the team controller, links, process names and CPU metering.
 
 Names load on first use (``core.lazy_exports``), so importing the package imports nothing
 else.
@@ -13,22 +13,21 @@ _SOURCES = {
     "deploy.runtime.codegen_cache": ["CompilationError", "default_cache_directory",
         "CompiledCodeCache"],
     "deploy.runtime.controller": ["RobotControl", "NmpcDecision", "WbcStep", "measurement_state",
-        "mocap_state", "TeamController"],
+        "mocap_state", "TeamController", "build_team_mpc"],
     "deploy.runtime.links": ["MocapTracker", "TeamLinks", "open_links", "finite_or_none"],
-    "deploy.runtime.loop": ["ControlLoop", "LoopHooks", "LoopSettings", "SATURATION_MARGIN"],
-    "deploy.runtime.nmpc_lockstep": ["LockstepNmpc"],
-    "deploy.runtime.nmpc_schedule": ["Flags", "NmpcHooks", "NmpcRunner", "NmpcSchedule"],
-    "deploy.runtime.nmpc_thread": ["NmpcResult", "NmpcThread"],
-    "deploy.runtime.process_executor": ["ProcessExecutor"],
+    "deploy.runtime.loop": ["ControlLoop", "Heartbeat", "LoopHooks", "LoopSettings",
+        "SATURATION_MARGIN"],
+    "deploy.runtime.process_names": ["COMM_LENGTH", "name_this_process"],
+    "deploy.runtime.cpu_meter": ["RunningCpu", "cpu_seconds"],
     "deploy.runtime.run_metrics": ["RunMetrics"],
     "deploy.runtime.sim_run": ["WBC_DECIMATION", "SimRun", "summary_line"],
     "deploy.runtime.stop_request": ["StopRequest"],
     "deploy.runtime.timing": ["Pacer", "PeriodStats"],
 }
-__all__ = ["CompilationError", "CompiledCodeCache", "ControlLoop", "Flags", "LockstepClock",
-           "LockstepNmpc", "LoopClock", "LoopHooks", "LoopSettings", "MocapTracker", "NmpcDecision",
-           "NmpcHooks", "NmpcResult", "NmpcRunner", "NmpcSchedule", "NmpcThread", "PacedClock",
-           "Pacer", "PeriodStats", "ProcessExecutor", "RobotControl", "RunMetrics",
+__all__ = ["COMM_LENGTH", "CompilationError", "CompiledCodeCache", "ControlLoop", "Heartbeat",
+           "LockstepClock", "LoopClock", "LoopHooks", "LoopSettings", "MocapTracker",
+           "NmpcDecision", "PacedClock", "Pacer", "PeriodStats", "RobotControl", "RunMetrics",
+           "RunningCpu", "build_team_mpc", "cpu_seconds", "name_this_process",
            "SATURATION_MARGIN", "SimRun", "StopRequest", "TeamController", "TeamLinks",
            "WBC_DECIMATION", "WbcStep", "default_cache_directory", "finite_or_none",
            "measurement_state", "mocap_state", "open_links", "summary_line"]

@@ -36,10 +36,10 @@ from core.nmpc.mpc_inputs import MpcInputs
 from core.nmpc.mpc_plan import MpcPlan
 from core.nmpc.settings import MpcSettings
 from deploy.config.scenario import Scenario
+from deploy.nmpc_runtime.process_executor import ProcessExecutor
 from deploy.recording.flight_recorder import FlightRecorder
 from deploy.recording.loop_recording import LoopRecording
 from deploy.runtime.codegen_cache import CompiledCodeCache
-from deploy.runtime.process_executor import ProcessExecutor
 from drivers.interfaces import JointCommand, MocapFrame, RobotMeasurement
 from drivers.robot_descriptions import (
     FOOT_RADIUS_M,

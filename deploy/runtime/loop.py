@@ -5,7 +5,7 @@ One tick per ``rates.wbc_hz`` (500 Hz) on a ``LoopClock`` (``deploy.runtime.cloc
 ``porter deploy``). Every tick, in every state: read every robot (a lost link is a fault, not
 an exception) and the MoCap; estimate (base velocity from leg odometry and MoCap for robots
 whose driver measures none, ``core.estimation.base_velocity``); in ARMED / RUNNING the NMPC
-schedule (``deploy.runtime.nmpc_schedule``: one timing grid, one plan hand-off, for a thread or
+schedule (``deploy.nmpc_runtime.nmpc_schedule``: one timing grid, one plan hand-off, for a thread or
 for simulated time); ``SafetySupervisor.check``; the state's commands (posture moves, or each
 robot's WBC on the active plan), clipped when just past a torque limit; ``filter_commands``;
 send; record (``deploy.recording.loop_recording`` is the only writer of loop data). Times: the
@@ -37,11 +37,11 @@ import numpy as np
 from core.estimation.base_velocity import BaseVelocityEstimator
 from core.model.conventions import PAYLOAD_NAME
 from deploy.config.deploy_config import PostureConfig, RatesConfig
+from deploy.nmpc_runtime.nmpc_schedule import NmpcSchedule
 from deploy.recording.loop_recording import LoopRecording
 from deploy.runtime.clock import LoopClock
 from deploy.runtime.controller import TeamController, WbcStep
 from deploy.runtime.links import TeamLinks
-from deploy.runtime.nmpc_schedule import NmpcSchedule
 from deploy.runtime.timing import PeriodStats, TickStages
 from deploy.safety.checks import SupervisorSettings, robot_limits
 from deploy.safety.posture import PostureMove, sitting_posture, standing_posture

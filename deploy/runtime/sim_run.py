@@ -10,7 +10,7 @@ starts standing (PREFLIGHT -> RUNNING at once) and the run ends standing at ``du
 fault (a fall, a NaN, a torque beyond its limit, repeated solver failures) ends in SAFE_STOP
 and joint damping, as on robots. With ``controller.model_computation_delay`` a plan takes
 effect only after its measured (or ``computation_delay_s``) update time has passed in
-simulated time (``deploy.runtime.nmpc_lockstep``).
+simulated time (``deploy.nmpc_runtime.nmpc_lockstep``).
 
 Ground truth is read from the simulation for the metrics (``deploy.runtime.run_metrics``) and
 the log's ``/sim/ground_truth`` only, after every physics tick.
@@ -31,6 +31,8 @@ from core.nmpc.mpc_plan import MpcPlan
 from core.nmpc.settings import MpcSettings
 from deploy.config.deploy_config import PostureConfig, RatesConfig
 from deploy.config.scenario import Scenario
+from deploy.nmpc_runtime.nmpc_lockstep import LockstepNmpc
+from deploy.nmpc_runtime.nmpc_schedule import NmpcSchedule
 from deploy.recording.flight_recorder import FlightRecorder
 from deploy.recording.loop_recording import LoopRecording
 from deploy.runtime.clock import LockstepClock
@@ -38,8 +40,6 @@ from deploy.runtime.codegen_cache import CompiledCodeCache
 from deploy.runtime.controller import NmpcDecision, TeamController, WbcStep
 from deploy.runtime.links import MocapTracker, TeamLinks
 from deploy.runtime.loop import ControlLoop, LoopSettings
-from deploy.runtime.nmpc_lockstep import LockstepNmpc
-from deploy.runtime.nmpc_schedule import NmpcSchedule
 from deploy.runtime.run_metrics import FALL_HEIGHT_FRACTION, MAX_TILT_RAD, RunMetrics
 from deploy.safety.supervisor import SupervisorSettings
 from drivers.interfaces import RobotDriver

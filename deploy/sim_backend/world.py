@@ -60,7 +60,6 @@ MAX_CATCH_UP_STEPS = 20
 SETTLE_SIT_S = 1.0  # PD to the sitting posture
 SETTLE_DAMPED_S = 2.0  # then joint damping: onto the belly
 SETTLE_KP, SETTLE_KD, SETTLE_DAMPING_KD = 60.0, 3.0, 2.0
-FIRMWARE_DAMPING_KD = 2.0  # [N m s/rad] what the modelled firmware timeout applies
 
 
 class ScaledClock:
@@ -149,10 +148,12 @@ class SimWorld:
             driver = sim.robot_driver(name)
             if isinstance(link, Go2Link):
                 self.fakes[name] = FakeGo2(driver, link.domain_id, None, link.topic_prefix,
-                                           link.foot_force_n_per_count)
+                                           link.foot_force_n_per_count,
+                                           config.sim.firmware_command_timeout_s)
             else:
                 a1 = FakeA1(driver, "127.0.0.1", 0,
-                            foot_force_n_per_count=link.foot_force_n_per_count)
+                            foot_force_n_per_count=link.foot_force_n_per_count,
+                            command_timeout_s=config.sim.firmware_command_timeout_s)
                 self.fakes[name] = a1
                 self.a1_endpoints[name] = a1.local_endpoint
         self.obstacle_bodies = {  # Motive body -> obstacle index
@@ -181,9 +182,6 @@ class SimWorld:
         self.pending_faults = sorted(config.sim.faults, key=lambda fault: fault.at_s)
         self.faults_applied: list[dict[str, Any]] = []
         self.after_fault = {name: CommandsAfterFault() for name in self.robot_types}
-        self.last_command_s: dict[str, float] = {}  # simulated time of each robot's last command
-        self.timed_out: set[str] = set()  # robots the firmware timeout damps now
-        self.firmware_timeouts = dict.fromkeys(self.robot_types, 0)
 
     def _inject_due_faults(self, elapsed_s: float) -> None:
         while self.pending_faults and self.pending_faults[0].at_s <= elapsed_s:
@@ -214,19 +212,6 @@ class SimWorld:
             counts.non_damping += 1
             counts.last_non_damping_s = self.simulation.time_s - self.faults_applied[0]["time_s"]
 
-    def _firmware_timeout(self, name: str) -> None:
-        """``sim.firmware_command_timeout_s``: damp a robot whose commands stopped (once per
-        silence; a new command ends it)."""
-        timeout_s = self.config.sim.firmware_command_timeout_s
-        last_s = self.last_command_s.get(name)
-        if timeout_s is None or last_s is None or name in self.timed_out:
-            return
-        if self.simulation.time_s - last_s > timeout_s:
-            self.simulation.set_command(name, JointCommand(
-                kd=np.full(JOINT_COUNT, FIRMWARE_DAMPING_KD)))
-            self.timed_out.add(name)
-            self.firmware_timeouts[name] += 1
-
     def endpoints(self) -> dict[str, Any]:
         """Where the fakes listen: NatNet command port, each A1's UDP (address, port)."""
         return {"natnet_command_port": self.natnet.command_port,
@@ -252,7 +237,7 @@ class SimWorld:
                             "commands_received": fake.commands_received,
                             "commands_rejected": fake.commands_rejected_total,
                             "states_published": fake.states_published,
-                            "firmware_timeouts": self.firmware_timeouts[name],
+                            "firmware_timeouts": fake.command_timeout.timeouts,
                             "after_fault": dataclasses.asdict(self.after_fault[name])}
         return {"time_s": sim.time_s, "payload_start_m": self.payload_start_m.tolist(),
                 "payload_position_m": sim.payload_pose()[0].tolist(), "robots": robots,
@@ -285,9 +270,7 @@ class SimWorld:
             for name, fake in self.fakes.items():
                 if fake.poll_commands():
                     self._received(name, fake.last_command)
-                    self.last_command_s[name] = sim.time_s
-                    self.timed_out.discard(name)
-                self._firmware_timeout(name)
+
             due = int(scale * (time.monotonic() - start) / dt) - self.steps
             if due > MAX_CATCH_UP_STEPS:  # cannot keep up: simulated time slips
                 start += (due - MAX_CATCH_UP_STEPS) * dt / scale

@@ -11,6 +11,7 @@ from core.lazy_exports import lazy_exports
 _SOURCES = {
     "drivers.unitree.a1_driver": ["A1Driver"],
     "drivers.unitree.a1_fake": ["FakeA1"],
+    "drivers.unitree.firmware_timeout": ["CommandTimeout"],
     "drivers.unitree.a1_udp_layout": ["LayoutError", "encode_low_cmd", "decode_low_cmd",
         "encode_low_state", "decode_low_state"],
     "drivers.unitree.conventions": ["WireState", "WireCommand", "wire_state_from_measurement",
@@ -27,7 +28,8 @@ _SOURCES = {
     "drivers.unitree.go2_fake": ["FakeGo2"],
     "drivers.unitree.peer": ["UnitreeLowLevelDriver", "PeriodicThread"],
 }
-__all__ = ["A1Driver", "BmsCmd_", "BmsState_", "FakeA1", "FakeGo2", "Go2Driver", "IMUState_",
+__all__ = ["A1Driver", "BmsCmd_", "BmsState_", "CommandTimeout", "FakeA1", "FakeGo2", "Go2Driver",
+           "IMUState_",
            "LayoutError", "LowCmd_", "LowState_", "MotorCmd_", "MotorState_", "PeriodicThread",
            "RequestHeader_", "RequestIdentity_", "RequestLease_", "RequestPolicy_", "Request_",
            "ResponseHeader_", "ResponseStatus_", "Response_", "UnitreeLowLevelDriver",

@@ -33,6 +33,7 @@ from drivers.unitree.conventions import (
     joint_command_from_wire_command,
     wire_state_from_measurement,
 )
+from drivers.unitree.firmware_timeout import CommandTimeout
 from drivers.unitree.peer import PeriodicThread, RealTimeFake
 
 
@@ -42,8 +43,10 @@ class FakeA1(RealTimeFake):
 
     def __init__(self, driver: RobotDriver, local_address: str = "127.0.0.1",
                  local_port: int = 0, peer_address: tuple[str, int] | None = None,
-                 foot_force_n_per_count: float = 1.0, crc: Crc = default_crc) -> None:
+                 foot_force_n_per_count: float = 1.0, crc: Crc = default_crc,
+                 command_timeout_s: float | None = None) -> None:
         self.driver = driver
+        self.command_timeout = CommandTimeout(command_timeout_s)
         self.peer_address = peer_address
         self.foot_force_n_per_count = foot_force_n_per_count
         self.crc = crc
@@ -99,6 +102,15 @@ class FakeA1(RealTimeFake):
                 continue
             newest = joint_command_from_wire_command(wire)
             self._last_source = source
+        if self.command_timeout.timeout_s is not None:
+            now_s = self.driver.read().time_s
+            if newest is not None:
+                self.command_timeout.received(now_s)
+            else:
+                damping = self.command_timeout.check(now_s)
+                if damping is not None:
+                    self.driver.send(damping)
+                    self.last_command = damping
         if newest is None:
             return False
         self.driver.send(newest)

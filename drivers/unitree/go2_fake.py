@@ -31,6 +31,7 @@ from drivers.unitree.conventions import (
     joint_command_from_wire_command,
     wire_state_from_measurement,
 )
+from drivers.unitree.firmware_timeout import CommandTimeout
 from drivers.unitree.go2_cdr import LowCmdCodec, LowStateCodec
 from drivers.unitree.go2_dds_types import (
     LowCmd_,
@@ -60,8 +61,10 @@ class FakeGo2(RealTimeFake):
 
     def __init__(self, driver: RobotDriver, domain_id: int = 0,
                  network_interface: str | None = None, topic_prefix: str = "",
-                 foot_force_n_per_count: float = 1.0) -> None:
+                 foot_force_n_per_count: float = 1.0,
+                 command_timeout_s: float | None = None) -> None:
         self.driver = driver
+        self.command_timeout = CommandTimeout(command_timeout_s)
         self.foot_force_n_per_count = foot_force_n_per_count
         self.participant = open_participant(domain_id, network_interface)
         p = self.participant
@@ -124,6 +127,15 @@ class FakeGo2(RealTimeFake):
                 self.commands_rejected[problem or "encoding"] += 1
                 continue
             newest = joint_command_from_wire_command(wire)
+        if self.command_timeout.timeout_s is not None:  # the firmware's reaction to silence
+            now_s = self.driver.read().time_s
+            if newest is not None:
+                self.command_timeout.received(now_s)
+            else:
+                damping = self.command_timeout.check(now_s)
+                if damping is not None:
+                    self.driver.send(damping)
+                    self.last_command = damping
         if newest is None:
             return False
         self.driver.send(newest)

@@ -59,6 +59,8 @@ def test_deploy_on_the_sim_backend_stands_walks_carries_and_sits_down(
     summary = log.summary()
     assert summary is not None and summary["final_state"] == "DONE"
     assert summary["safe_stop"] is None
+    assert summary["watchdog"] == {"enabled": True, "tripped": False}
+    assert summary["wbc_failed_ticks"] == 0
     assert summary["run_s"] == pytest.approx(load_deploy_config(TWO_GO2)[1].duration_s, abs=0.1)
     # margin flags are counted and logged, never counted as failed solves
     assert summary["nmpc_margin_flags"] <= summary["nmpc_updates"]

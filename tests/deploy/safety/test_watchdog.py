@@ -85,10 +85,14 @@ def test_kill_9_of_the_loop_leaves_only_damping_within_50_ms(team) -> None:
     config, fakes = team
     context = mp.get_context("spawn")
     ready = context.Event()
-    loop = context.Process(target=_a_loop, args=(config, ready), daemon=True)
+    # not a daemon: daemonic processes may not start the watchdog's process
+    loop = context.Process(target=_a_loop, args=(config, ready))
     loop.start()
     try:
-        assert ready.wait(60.0), "the loop's stand-in did not start"
+        deadline = time.monotonic() + 60.0
+        while not ready.wait(0.1):
+            assert loop.is_alive() and time.monotonic() < deadline, \
+                "the loop's stand-in did not start"
         before = _observe(fakes, 0.3)
         assert {name for _, name, _ in before} == set(fakes)  # the loop's torques arrive
         assert all(c.torque_nm[0] == pytest.approx(HOLD_TORQUE_NM) for _, _, c in before)

@@ -279,3 +279,37 @@ def test_damping_and_sport_mode_release(link):
 def test_one_interface_per_domain_and_process(link):
     with pytest.raises(DriverError, match="already runs on interface 'lo'"):
         open_participant(DOMAIN_ID, "eth9")
+
+
+def test_the_firmware_holds_the_last_command_unless_its_timeout_is_modelled(scene):
+    """Default: commands stop, the last torque stays (the unsafe case, as on the robot). With
+    ``command_timeout_s`` the fake damps once the last command is that old (simulated time),
+    and a new command takes over again."""
+    prefix = f"timeout_{os.getpid()}_{next(_prefixes)}"
+    simulation = TeamSimulation(scene)
+    held = FakeGo2(simulation.robot_driver(ROBOT), DOMAIN_ID, topic_prefix=prefix + "_held")
+    timed = FakeGo2(simulation.robot_driver("go2_1"), DOMAIN_ID, topic_prefix=prefix,
+                    command_timeout_s=0.05)
+    drivers = [Go2Driver("held", DOMAIN_ID, topic_prefix=prefix + "_held"),
+               Go2Driver("timed", DOMAIN_ID, topic_prefix=prefix)]
+    torque = JointCommand(torque_nm=np.full(12, 2.0))
+    try:
+        for driver, fake in zip(drivers, (held, timed), strict=True):
+            driver.send(torque)
+            assert fake.wait_for_command(2.0) and fake.poll_commands()
+        simulation.step(40)  # 40 ms without a command: within the timeout
+        assert not timed.poll_commands() and timed.last_command.torque_nm[0] == 2.0
+        simulation.step(20)  # 60 ms
+        assert not timed.poll_commands()  # no new command, but the firmware reacts
+        damping = timed.last_command
+        assert not damping.torque_nm.any() and not damping.kp.any() and damping.kd.all()
+        assert timed.command_timeout.timeouts == 1
+        assert not timed.poll_commands() and timed.command_timeout.timeouts == 1  # once
+        assert not held.poll_commands() and held.last_command.torque_nm[0] == 2.0  # held
+        assert held.command_timeout.timeouts == 0
+        drivers[1].send(torque)
+        assert timed.wait_for_command(2.0) and timed.poll_commands()
+        assert timed.last_command.torque_nm[0] == 2.0
+    finally:
+        for item in (*drivers, held, timed):
+            item.close()

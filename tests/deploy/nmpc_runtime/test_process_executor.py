@@ -6,7 +6,7 @@ import numpy as np
 
 from core.nmpc.admm_executor import LocalSolverSpec
 from core.nmpc.admm_mpc import DistributedMpc
-from deploy.runtime.process_executor import ProcessExecutor
+from deploy.nmpc_runtime.process_executor import ProcessExecutor
 from tests.core.controller_fixtures import inputs_at_start, settings, team
 
 

@@ -1,4 +1,4 @@
-"""The NMPC in simulated time: the same interface as ``deploy.runtime.nmpc_thread.NmpcThread``
+"""The NMPC in simulated time: the same interface as ``deploy.nmpc_runtime.nmpc_thread.NmpcThread``
 (``busy``, ``submit``, ``take``, ``close``) for the lockstep clock.
 
 ``submit`` runs ``TeamController.update`` at once (simulated time stands still meanwhile); the
@@ -13,8 +13,8 @@ from __future__ import annotations
 
 from collections.abc import Callable
 
+from deploy.nmpc_runtime.nmpc_thread import NmpcResult
 from deploy.runtime.controller import NmpcDecision, TeamController
-from deploy.runtime.nmpc_thread import NmpcResult
 
 __all__ = ["LockstepNmpc"]
 

@@ -4,9 +4,9 @@ of finished plans, their recording, and NMPC health for the safety supervisor.
 ``step`` runs in the loop, once per WBC tick while ARMED / RUNNING. A finished result is taken
 first; then, at an NMPC instant with the runner idle, the decision is built from the tick's
 measurements and MoCap frame and submitted, and taken at once if the runner already has it
-(lockstep without a modelled delay). The runner is ``deploy.runtime.nmpc_thread.NmpcThread``
+(lockstep without a modelled delay). The runner is ``deploy.nmpc_runtime.nmpc_thread.NmpcThread``
 (paced clock: a background thread, the WBC never waits) or
-``deploy.runtime.nmpc_lockstep.LockstepNmpc`` (simulated time).
+``deploy.nmpc_runtime.nmpc_lockstep.LockstepNmpc`` (simulated time).
 
 One timing grid: the instants are ``start + k / nmpc_hz``; after a submit, and again when a plan
 takes effect, the next instant is the first grid instant after now, so an update that overruns
@@ -31,9 +31,9 @@ import numpy as np
 
 from core.model.obstacles import Obstacle
 from core.nmpc.mpc_plan import MpcPlan
+from deploy.nmpc_runtime.nmpc_thread import NmpcResult
 from deploy.recording.loop_recording import LoopRecording
 from deploy.runtime.controller import NmpcDecision, TeamController
-from deploy.runtime.nmpc_thread import NmpcResult
 from deploy.runtime.timing import PeriodStats
 from drivers.interfaces import MocapFrame, RobotMeasurement, WrenchSensors
 

@@ -1,5 +1,6 @@
-"""The NMPC in a process of its own: the same interface as ``deploy.runtime.nmpc_thread.NmpcThread``
-(``busy``, ``submit``, ``take``, ``close``), so no NMPC work runs on the loop's interpreter.
+"""The NMPC in a process of its own: the same interface as
+``deploy.nmpc_runtime.nmpc_thread.NmpcThread`` (``busy``, ``submit``, ``take``, ``close``), so no
+NMPC work runs on the loop's interpreter.
 
 In a thread, the NMPC's Python (guesses, parameters, consensus and dual updates, decoding,
 ~4 ms per 2-agent update) takes the interpreter lock from the 500 Hz loop for whole switch
@@ -26,9 +27,9 @@ from multiprocessing.connection import Connection
 from core.nmpc.mpc_inputs import MpcInputs
 from core.nmpc.settings import MpcSettings
 from deploy.config.scenario import Scenario
+from deploy.nmpc_runtime.nmpc_thread import NmpcResult
 from deploy.runtime.codegen_cache import CompiledCodeCache
 from deploy.runtime.controller import NmpcDecision, build_team_mpc
-from deploy.runtime.nmpc_thread import NmpcResult
 from deploy.runtime.process_names import name_this_process
 
 __all__ = ["NmpcProcess", "NmpcProcessError"]

@@ -10,9 +10,9 @@ import pytest
 
 from core.nmpc.mpc_plan import MpcPlan
 from deploy.config.scenario import load_scenario
+from deploy.nmpc_runtime.nmpc_process import NmpcProcess, NmpcProcessError
+from deploy.nmpc_runtime.nmpc_thread import NmpcResult
 from deploy.runtime.codegen_cache import CompiledCodeCache
-from deploy.runtime.nmpc_process import NmpcProcess, NmpcProcessError
-from deploy.runtime.nmpc_thread import NmpcResult
 from deploy.runtime.sim_run import SimRun
 
 

@@ -7,9 +7,9 @@ import time
 
 import pytest
 
-from deploy.runtime.nmpc_lockstep import LockstepNmpc
-from deploy.runtime.nmpc_schedule import NmpcSchedule
-from deploy.runtime.nmpc_thread import NmpcThread
+from deploy.nmpc_runtime.nmpc_lockstep import LockstepNmpc
+from deploy.nmpc_runtime.nmpc_schedule import NmpcSchedule
+from deploy.nmpc_runtime.nmpc_thread import NmpcThread
 from tests.deploy.runtime.fakes import FakeClock, FakeControl, frame, measurements, plan
 
 TICK_S = 0.002
