@@ -133,7 +133,7 @@ def run_deploy(args: argparse.Namespace) -> int:
         if loop is not None:
             summary = deploy_summary(loop, args, backend)
             summary["watchdog"] = {"enabled": watchdog is not None,
-                                   "tripped": watchdog is not None and watchdog.tripped}
+                                   "tripped": loop.watchdog_tripped}
         if watchdog is not None:
             watchdog.disarm()
         if recorder is not None:

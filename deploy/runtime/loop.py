@@ -74,6 +74,7 @@ class Heartbeat(Protocol):
     def beat(self) -> None: ...
     @property
     def tripped(self) -> bool: ...
+    def disarm(self) -> None: ...
 
 
 class LoopHooks(Protocol):
@@ -98,6 +99,7 @@ class ControlLoop:
         self.sequence, self.confirm, self.preflight = sequence, confirm, preflight
         self.hooks, self.out, self.verbose = hooks, out, verbose
         self.watchdog = watchdog
+        self.watchdog_tripped = False  # the watchdog took over during the run
         self.names = control.robot_names
         types = {robot.name: robot.robot_type for robot in control.robots}
         self.limits = {name: robot_limits(types[name], name) for name in self.names}
@@ -166,6 +168,11 @@ class ControlLoop:
                 self._send(self.supervisor.damping_commands())
             raise
         finally:
+            # The run is over (DONE, or damped after an exception): the watchdog must not take
+            # the summary, the log's close or the NMPC's shutdown for a dead loop.
+            if self.watchdog is not None:
+                self.watchdog_tripped = self.watchdog.tripped
+                self.watchdog.disarm()
             self.nmpc.close()
 
     def _tick(self) -> bool:

@@ -153,7 +153,9 @@ class Watchdog:
 
     def disarm(self, timeout_s: float = 5.0) -> None:
         """The run ended cleanly: stop watching (no command is sent). After a trip, the
-        damping stops too."""
+        damping stops too. Calling it again does nothing."""
+        if not self._process.is_alive() and self._state.value == _DISARMED:
+            return
         self._state.value = _DISARMED
         self._process.join(timeout_s)
         if self._process.is_alive():
