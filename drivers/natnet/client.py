@@ -18,7 +18,9 @@ Sockets bind to ``local_address`` only (loopback by default), never to all inter
 Bodies are named through MODELDEF (requested after SERVERINFO, and again when a frame says
 the tracked models changed) unless ``body_ids`` maps names to streaming ids. Bodies whose
 tracking-valid bit is clear, with an unknown id, or with non-finite values are dropped and
-counted; undecodable packets are counted and ignored.
+counted; undecodable packets are counted and ignored, and so are packets from any host but
+``server_address`` (another MoCap system, a spoof) and frames whose timestamp goes backwards
+while the frame number advances (no fresh measurement: the stream goes stale).
 """
 
 from __future__ import annotations
@@ -87,7 +89,7 @@ class NatNetCounters:
     frames_received: int = 0
     frames_missed: int = 0  # gaps in the frame numbers (dropped on the way)
     frames_out_of_order: int = 0  # older than the latest one, ignored
-    packets_rejected: int = 0  # truncated, malformed or of an unknown message id
+    packets_rejected: int = 0  # malformed, unknown id, foreign sender, timestamp backwards
     bodies_untracked: int = 0  # tracking-valid bit clear
     bodies_unknown: int = 0  # id without a name
     bodies_invalid: int = 0  # non-finite position or zero quaternion
@@ -114,6 +116,12 @@ class NatNetClient:
         self._next_keepalive_s = self._next_request_s = -math.inf
         self._changed = threading.Condition()
         self._server = (config.server_address, config.command_port)
+        try:  # packets are accepted from the server's address only
+            self._server_ip = socket.gethostbyname(config.server_address)
+        except OSError as error:
+            raise NatNetError(f"server_address {config.server_address!r} does not resolve: "
+                              f"{error}") from error
+        self._latest_timestamp_s: float | None = None
         self._command_socket = socket.socket(socket.AF_INET, socket.SOCK_DGRAM)
         self._data_socket = socket.socket(socket.AF_INET, socket.SOCK_DGRAM)
         try:
@@ -213,7 +221,11 @@ class NatNetClient:
             try:
                 readable, _, _ = select.select(sockets, [], [], _POLL_S)
                 for sock in readable:
-                    self._handle(sock.recv(_RECEIVE_BYTES))
+                    packet, (sender, _) = sock.recvfrom(_RECEIVE_BYTES)
+                    if sender != self._server_ip:  # another host's stream, or a spoof
+                        self._reject("foreign sender")
+                        continue
+                    self._handle(packet)
             except OSError:
                 if self._stop.is_set():
                     return
@@ -255,9 +267,12 @@ class NatNetClient:
             elif message_id not in _KNOWN_MESSAGE_IDS:
                 raise NatNetProtocolError(f"unknown message id {message_id}", "unknown message")
         except NatNetProtocolError as error:
-            self.counters.packets_rejected += 1
-            reasons = self.counters.rejection_reasons
-            reasons[error.reason] = reasons.get(error.reason, 0) + 1
+            self._reject(error.reason)
+
+    def _reject(self, reason: str) -> None:
+        self.counters.packets_rejected += 1
+        reasons = self.counters.rejection_reasons
+        reasons[reason] = reasons.get(reason, 0) + 1
 
     def _on_frame(self, frame: FrameOfData) -> None:
         counters = self.counters
@@ -265,6 +280,12 @@ class NatNetClient:
         if (last is not None and frame.frame_number <= last
                 and last - frame.frame_number < _FRAME_NUMBER_RESTART_GAP):
             counters.frames_out_of_order += 1
+            return
+        if (self._latest_timestamp_s is not None and frame.frame_number > (last or 0)
+                and frame.timestamp_s < self._latest_timestamp_s):
+            # a newer frame from an older time: the server's clock jumped back (a restarted
+            # or misbehaving Motive); it is no fresh measurement, so the stream goes stale
+            self._reject("timestamp backwards")
             return
         if last is not None and frame.frame_number > last + 1:
             counters.frames_missed += frame.frame_number - last - 1
@@ -292,6 +313,7 @@ class NatNetClient:
         with self._changed:
             self._latest = MocapFrame(time_s=frame.timestamp_s, poses=poses)
             self._latest_frame_number = frame.frame_number
+            self._latest_timestamp_s = frame.timestamp_s
             self._latest_receive_s = self._clock()
             self._changed.notify_all()
 

@@ -16,7 +16,7 @@ from core.plant.standard_scenarios import ring_team_settings
 from drivers.interfaces import JointCommand, MocapSource
 from drivers.mujoco.scene import build_team_scene
 from drivers.mujoco.simulation import TeamSimulation
-from drivers.natnet.client import MocapLostError, NatNetClient, NatNetClientConfig
+from drivers.natnet.client import MocapLostError, NatNetClient, NatNetClientConfig, NatNetError
 from drivers.natnet.fake import FakeNatNetServer, simulation_pose_source
 from drivers.natnet.protocol import (
     FrameOfData,
@@ -289,3 +289,36 @@ def test_team_simulation_poses_through_the_wire():
         np.testing.assert_allclose(frame.poses["obstacle_0"][0], [1.5, 0.5, 0.25], atol=1e-6)
         client.close()
         assert _wait_until(lambda: not server.clients)  # the client said DISCONNECT
+
+
+def test_packets_from_another_host_are_rejected(link):
+    """127.0.0.2 is loopback too, but not the configured server (127.0.0.1)."""
+    server, client = link
+    frame = pack_frame_of_data(FrameOfData(1, (RigidBodySample(1, (0, 0, 0), (0, 0, 0, 1)),)))
+    with socket.socket(socket.AF_INET, socket.SOCK_DGRAM) as stranger:
+        stranger.bind(("127.0.0.2", 0))
+        for _ in range(3):
+            stranger.sendto(frame, ("127.0.0.1", client.data_port))
+    assert _wait_until(lambda: client.counters.rejection_reasons.get("foreign sender") == 3)
+    assert client.latest() is None and client.counters.frames_received == 0
+    assert set(_publish_and_wait(server, client).poses) == {"robot", "payload"}
+
+
+def test_a_frame_from_an_older_time_is_no_fresh_frame(link):
+    server, client = link
+    body = (RigidBodySample(1, (0.5, 0.0, 0.0), (0, 0, 0, 1)),)
+    server.send_packet(pack_frame_of_data(FrameOfData(5000, body, timestamp_s=12.5)))
+    assert _wait_until(lambda: client.counters.frames_received == 1)
+    server.send_packet(pack_frame_of_data(FrameOfData(5001, body, timestamp_s=12.0)))
+    assert _wait_until(lambda: client.counters.rejection_reasons.get("timestamp backwards") == 1)
+    assert client.latest().time_s == 12.5 and client.counters.frames_received == 1
+    server.send_packet(pack_frame_of_data(FrameOfData(5002, body, timestamp_s=12.6)))
+    assert _wait_until(lambda: client.counters.frames_received == 2)
+    # a restarted server (frame numbers, far back, and clock from zero) is followed
+    server.send_packet(pack_frame_of_data(FrameOfData(1, body, timestamp_s=0.01)))
+    assert _wait_until(lambda: client.counters.frames_received == 3)
+
+
+def test_an_unresolvable_server_address_is_a_clear_error():
+    with pytest.raises(NatNetError, match="server_address 'no-such-mocap.invalid'"):
+        NatNetClient(NatNetClientConfig(server_address="no-such-mocap.invalid"))
