@@ -207,6 +207,7 @@ class WholeBodyController:
             rotation = state.rotation()
             q, v = self.pinocchio_state(state, rotation)
             pin.computeAllTerms(model, data, q, v)
+            pin.updateFramePlacements(model, data)  # the swing feet's placements (oMf)
         mass = np.array(data.M)  # Pinocchio fills the upper triangle; mirror it
         mass[self._lower] = mass.T[self._lower]
         bias = np.array(data.nle)
@@ -226,7 +227,6 @@ class WholeBodyController:
         hessian = layout.hessian.copy()
         gradient = np.zeros(n)
         gradient[nf:nf + 6] -= s.base_weight * self._base_acceleration(state, target, rotation, v)
-        pin.updateFramePlacements(model, data)
         for leg in swing:
             jacobian = jacobians[leg]
             velocity = jacobian @ v

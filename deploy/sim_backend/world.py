@@ -270,7 +270,6 @@ class SimWorld:
             for name, fake in self.fakes.items():
                 if fake.poll_commands():
                     self._received(name, fake.last_command)
-
             due = int(scale * (time.monotonic() - start) / dt) - self.steps
             if due > MAX_CATCH_UP_STEPS:  # cannot keep up: simulated time slips
                 start += (due - MAX_CATCH_UP_STEPS) * dt / scale

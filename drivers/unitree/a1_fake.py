@@ -102,15 +102,11 @@ class FakeA1(RealTimeFake):
                 continue
             newest = joint_command_from_wire_command(wire)
             self._last_source = source
-        if self.command_timeout.timeout_s is not None:
-            now_s = self.driver.read().time_s
-            if newest is not None:
-                self.command_timeout.received(now_s)
-            else:
-                damping = self.command_timeout.check(now_s)
-                if damping is not None:
-                    self.driver.send(damping)
-                    self.last_command = damping
+        # the firmware's reaction to silence (simulated time from the robot's own clock)
+        damping = self.command_timeout.update(newest, lambda: self.driver.read().time_s)
+        if damping is not None:
+            self.driver.send(damping)
+            self.last_command = damping
         if newest is None:
             return False
         self.driver.send(newest)

@@ -8,6 +8,8 @@ until a new command arrives, as a firmware with a command watchdog would.
 
 from __future__ import annotations
 
+from collections.abc import Callable
+
 import numpy as np
 
 from core.model.conventions import JOINT_COUNT
@@ -42,3 +44,14 @@ class CommandTimeout:
         self._damping = True
         self.timeouts += 1
         return JointCommand(kd=np.full(JOINT_COUNT, self.damping_kd))
+
+    def update(self, newest: JointCommand | None, now_s: Callable[[], float]
+               ) -> JointCommand | None:
+        """One poll of a fake: ``newest`` (None: no valid command arrived) at ``now_s()``
+        (read only when a timeout is modelled). Returns the damping to apply now, if any."""
+        if self.timeout_s is None:
+            return None
+        if newest is not None:
+            self.received(now_s())
+            return None
+        return self.check(now_s())

@@ -127,15 +127,11 @@ class FakeGo2(RealTimeFake):
                 self.commands_rejected[problem or "encoding"] += 1
                 continue
             newest = joint_command_from_wire_command(wire)
-        if self.command_timeout.timeout_s is not None:  # the firmware's reaction to silence
-            now_s = self.driver.read().time_s
-            if newest is not None:
-                self.command_timeout.received(now_s)
-            else:
-                damping = self.command_timeout.check(now_s)
-                if damping is not None:
-                    self.driver.send(damping)
-                    self.last_command = damping
+        # the firmware's reaction to silence (simulated time from the robot's own clock)
+        damping = self.command_timeout.update(newest, lambda: self.driver.read().time_s)
+        if damping is not None:
+            self.driver.send(damping)
+            self.last_command = damping
         if newest is None:
             return False
         self.driver.send(newest)
