@@ -140,6 +140,7 @@ class DistributedMpc:
         plan.solves = [stats for record in records for stats in record.solves]
         plan.success = all(stats.success for stats in plan.solves)
         plan.flag_unsafe_start(inputs.safety_values())
+        plan.flag_relaxed_barriers(self.settings.safety.slack_tolerance_m)
         plan.flag_dropped_obstacles(selections)
         plan.update_time_s = time.perf_counter() - start
         return plan
@@ -159,6 +160,7 @@ class DistributedMpc:
             plan.grf[i] = own.grf[i]
             plan.wrench[i] = own.wrench[i]
             plan.wrench_trajectories[i] = own.wrench_trajectories[i]
+            plan.barrier_slack_m = max(plan.barrier_slack_m, own.barrier_slack_m)
         plan.payload_trajectory = np.vstack([
             inputs.payload_state, consensus[: self._payload_size].reshape(n, STATE_SIZE)
         ])

@@ -65,6 +65,7 @@ class CentralizedMpc:
         plan.solves = [solution.stats]
         plan.success = solution.stats.success
         plan.flag_unsafe_start(inputs.safety_values())
+        plan.flag_relaxed_barriers(self.settings.safety.slack_tolerance_m)
         plan.flag_dropped_obstacles([selection])
         plan.update_time_s = time.perf_counter() - start
         return plan

@@ -4,7 +4,8 @@ From the states the caller measured (or predicted), in the world frame: referenc
 1..N from the waypoint reference at ``reference_time_s``, each robot's foot positions and
 contacts over the horizon from its own foothold plan, and the obstacles at
 ``obstacle_time_s``. ``hold_pose`` zeroes the reference velocities (standing still while the
-team settles).
+team settles); ``stand_still`` also holds the stage-1 reference pose over the whole horizon (the
+reference governor waits for a team that lags behind).
 """
 
 from __future__ import annotations
@@ -16,7 +17,7 @@ import numpy as np
 from core.model.obstacles import Obstacle
 from core.model.team import TeamModel
 from core.nmpc.mpc_inputs import MpcInputs
-from core.nmpc.reference import WaypointReference, horizon_references
+from core.nmpc.reference import BrakingReference, WaypointReference, horizon_references
 from core.nmpc.settings import MpcSettings
 
 __all__ = ["FootHorizon", "build_mpc_inputs"]
@@ -25,16 +26,20 @@ __all__ = ["FootHorizon", "build_mpc_inputs"]
 FootHorizon = Callable[[int, np.ndarray, np.ndarray], tuple[np.ndarray, np.ndarray]]
 
 
-def build_mpc_inputs(team: TeamModel, reference: WaypointReference, settings: MpcSettings,
+def build_mpc_inputs(team: TeamModel, reference: WaypointReference | BrakingReference,
+                     settings: MpcSettings,
                      robot_states: np.ndarray, payload_state: np.ndarray,
                      reference_time_s: float, foot_horizon: FootHorizon,
                      obstacles: Sequence[Obstacle], obstacle_time_s: float,
-                     hold_pose: bool = False) -> MpcInputs:
+                     hold_pose: bool = False, stand_still: bool = False) -> MpcInputs:
     """``MpcInputs`` for robots at ``robot_states`` (n_A, 12) and the payload at
     ``payload_state`` (12,); times in seconds."""
     n, ts = settings.horizon_steps, settings.sample_period_s
     robot_refs, payload_ref = horizon_references(team, reference, reference_time_s, n, ts)
-    if hold_pose:
+    if stand_still:
+        robot_refs[:] = robot_refs[:, :1]
+        payload_ref[:] = payload_ref[:1]
+    if hold_pose or stand_still:
         robot_refs[:, :, 3:6] = 0.0
         payload_ref[:, 3:6] = 0.0
     feet, contacts = [], []

@@ -42,6 +42,10 @@ class MpcPlan:
     ``start_inside_margin`` is True when a body starts inside an obstacle's safety margin (more
     than the flag's tolerance): the plan is still a converged recovery plan, not a failed solve;
     ``warnings`` say which body and obstacle. ``flagged`` is either.
+    ``barrier_slack_m``: the largest slack the soft barriers used over the horizon (and over the
+    agents' local problems) [m]: 0 while the safety constraints are feasible; above the
+    tolerance of ``flag_relaxed_barriers`` the plan is ``relaxed``: the safest plan the solver
+    found violates a barrier by that much.
     """
 
     grf: np.ndarray
@@ -57,11 +61,13 @@ class MpcPlan:
     consensus_trajectory: np.ndarray | None = None
     warnings: list[str] = field(default_factory=list)
     start_inside_margin: bool = False
+    barrier_slack_m: float = 0.0
+    relaxed: bool = False
 
     @property
     def flagged(self) -> bool:
-        """A failed solve or a start inside a safety margin."""
-        return not self.success or self.start_inside_margin
+        """A failed solve, a start inside a safety margin or relaxed barriers."""
+        return not self.success or self.start_inside_margin or self.relaxed
 
     def flag_unsafe_start(self, safety_values_m: np.ndarray, tolerance_m: float = 5e-3) -> None:
         """Flag the plan if any body starts inside an obstacle's safety margin.
@@ -77,6 +83,14 @@ class MpcPlan:
                                  f"h = {safety_values_m[body, obstacle]:.3f} m")
             self.start_inside_margin = True
 
+
+    def flag_relaxed_barriers(self, tolerance_m: float) -> None:
+        """Flag the plan ``relaxed`` (with a warning) when its barrier slack exceeds
+        ``tolerance_m`` [m]: no plan satisfies every safety constraint from this state."""
+        if self.barrier_slack_m > tolerance_m:
+            self.relaxed = True
+            self.warnings.append(f"safety constraints relaxed: barrier slack "
+                                 f"{self.barrier_slack_m:.4f} m (tolerance {tolerance_m} m)")
 
     def flag_dropped_obstacles(self, selections: list[ObstacleSelection]) -> None:
         """Warn about obstacles left out of a problem's slots although predicted inside their
@@ -107,4 +121,5 @@ def decode_plan(problem: TransportProblem, team: TeamModel, decision: np.ndarray
         grf=grfs[:, 0].copy(), wrench=wrenches[:, 0].copy(), robot_trajectories=robots,
         payload_trajectory=payload, grf_trajectories=grfs, wrench_trajectories=wrenches,
         solves=[], success=True, update_time_s=0.0,
+        barrier_slack_m=problem.barrier_slack(decision),
     )

@@ -44,6 +44,37 @@ class WaypointReference:
         return np.asarray(self.waypoints_m, dtype=float)[-1]
 
 
+@dataclass(frozen=True)
+class BrakingReference:
+    """The braking backup's payload reference: from ``position_m`` (2,) moving at
+    ``velocity_m_s`` (2,) at ``start_time_s`` (reference time [s]), decelerate at
+    ``deceleration_m_s2`` along that heading to rest, then hold the position reached; constant
+    height [m] and yaw [rad] (the measured yaw: the team does not turn while it brakes)."""
+
+    start_time_s: float
+    position_m: np.ndarray
+    velocity_m_s: np.ndarray
+    height_m: float
+    yaw_rad: float
+    deceleration_m_s2: float
+
+    def payload_state(self, time_s: float) -> np.ndarray:
+        speed = float(np.linalg.norm(self.velocity_m_s))
+        direction = np.asarray(self.velocity_m_s, float) / speed if speed > 0 else np.zeros(2)
+        elapsed = min(max(time_s - self.start_time_s, 0.0), speed / self.deceleration_m_s2)
+        state = np.zeros(STATE_SIZE)
+        state[0:2] = np.asarray(self.position_m, float) + direction * (
+            speed * elapsed - 0.5 * self.deceleration_m_s2 * elapsed ** 2)
+        state[2] = self.height_m
+        state[3:5] = direction * (speed - self.deceleration_m_s2 * elapsed)
+        state[8] = self.yaw_rad
+        return state
+
+    def goal_m(self) -> np.ndarray:
+        """Where the payload comes to rest [m]."""
+        return self.payload_state(np.inf)[0:2]
+
+
 def robot_state_from_payload(team: TeamModel, agent: int, payload_state: np.ndarray
                              ) -> np.ndarray:
     """Robot state whose coupling point coincides with the payload's, same yaw, level trunk.
@@ -64,7 +95,8 @@ def robot_state_from_payload(team: TeamModel, agent: int, payload_state: np.ndar
     return state
 
 
-def horizon_references(team: TeamModel, reference: WaypointReference, time_s: float,
+def horizon_references(team: TeamModel, reference: WaypointReference | BrakingReference,
+                       time_s: float,
                        steps: int, sample_period_s: float) -> tuple[np.ndarray, np.ndarray]:
     """Robot references (n_A, steps, 12) and payload reference (steps, 12) at stages 1..steps."""
     payload = np.array([reference.payload_state(time_s + k * sample_period_s)

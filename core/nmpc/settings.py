@@ -61,7 +61,17 @@ class SafetySettings(StrictModel):
     # Also enforce psi1 = h_{k+1} - (1 - alpha1) h_k >= 0 at stages 1..N-1 (see
     # core.nmpc.cbf.stagewise_first_order): robustness to model mismatch; not in the paper.
     first_order_condition: bool = True
-
+    # Soft barriers: every barrier row of stage k reads c(x_k, u_k) + sigma_k >= 0 with one
+    # slack sigma_k >= 0 per stage, priced by an exact penalty rho1 sigma + rho2 sigma^2 (per
+    # metre, unscaled cost units). While the hard problem is feasible the linear price exceeds
+    # every barrier multiplier, so the solution is the hard one (sigma = 0); when it is not, the
+    # solver still returns the plan that violates the barriers least, and the slack it used is
+    # reported (``MpcPlan.barrier_slack_m``) instead of a failed solve.
+    soft_barriers: bool = True
+    slack_penalty_linear: float = Field(1e10, gt=0)
+    slack_penalty_quadratic: float = Field(1e7, gt=0)
+    # A plan whose slack exceeds this is ``relaxed`` (the safety constraints were infeasible).
+    slack_tolerance_m: float = Field(0.01, gt=0, le=0.1)
 
     @model_validator(mode="before")
     @classmethod
@@ -91,6 +101,21 @@ class AdmmSettings(StrictModel):
     iterations: int = Field(2, ge=1)
     rho_state: float = Field(1e4, ge=0)
     rho_wrench: float = Field(1e3, gt=0)
+
+
+class BrakingSettings(StrictModel):
+    """The braking backup: when plans stay infeasible, stop the team instead of pressing on.
+
+    ``after_flagged_updates`` plans in a row that relaxed their safety constraints (soft
+    barriers used slack) or failed to solve start braking: the payload reference becomes
+    ``core.nmpc.reference.BrakingReference`` (decelerate along the current heading at
+    ``deceleration_m_s2``, then hold), latched for the rest of the run; ``controlled_stop_s``
+    after braking began the team sits down (a controlled stop, not a safe stop)."""
+
+    enabled: bool = True
+    after_flagged_updates: int = Field(3, ge=1, le=60)
+    deceleration_m_s2: float = Field(0.5, gt=0.0, le=5.0)
+    controlled_stop_s: float = Field(2.0, gt=0.0, le=30.0)
 
 
 SolverName = Literal["fatrop", "rti", "ipopt", "ipopt-reference"]
@@ -134,3 +159,4 @@ class MpcSettings(StrictModel):
     contact: ContactSettings = ContactSettings()
     admm: AdmmSettings = AdmmSettings()
     solver: SolverSettings = SolverSettings()
+    braking: BrakingSettings = BrakingSettings()

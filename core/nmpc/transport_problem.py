@@ -52,6 +52,8 @@ ROBOT_MODEL_SIZE = 1 + 6 + 3  # mass, inertia entries, coupling point in robot
 SELF = "self"
 # Upper bound on a swing foot's normal force [N] (see TransportProblem.decision_bounds).
 SWING_FORCE_BOUND_N = 1e-5
+# Decision block of the per-stage barrier slack (``SafetySettings.soft_barriers``).
+SLACK_BLOCK = "barrier_slack"
 
 
 @dataclass
@@ -93,7 +95,8 @@ class TransportProblem:
 
     def decision_bounds(self, contacts: np.ndarray, agent: int | None = None
                         ) -> tuple[np.ndarray, np.ndarray]:
-        """lbx, ubx: 0 <= f_z <= f_max on stance feet, 0 <= f_z <= 1e-5 N on swing feet.
+        """lbx, ubx: 0 <= f_z <= f_max on stance feet, 0 <= f_z <= 1e-5 N on swing feet, and
+        sigma >= 0 on the barrier slacks (soft barriers).
 
         Swing feet get a tiny interval rather than lbx = ubx = 0: fatrop warm-started from a
         previous solve took 18.3 iterations per local solve with fixed variables against 5.1
@@ -112,7 +115,22 @@ class TransportProblem:
                 lower[z_rows] = 0.0
                 stance = np.asarray(contacts[r][k], dtype=float)
                 upper[z_rows] = f_max * stance + SWING_FORCE_BOUND_N * (1.0 - stance)
+        for k in range(self.horizon_steps if self.soft_barriers else 0):
+            lower[d.slice(f"{SLACK_BLOCK}@{k}")] = 0.0
         return lower, upper
+
+    @property
+    def soft_barriers(self) -> bool:
+        """Whether the barriers carry a slack (``SafetySettings.soft_barriers``, with slots)."""
+        return f"{SLACK_BLOCK}@0" in self.nlp.decision.offsets
+
+    def barrier_slack(self, solution: np.ndarray) -> float:
+        """Largest barrier slack of ``solution`` [m] (0 without soft barriers)."""
+        if not self.soft_barriers:
+            return 0.0
+        d = self.nlp.decision
+        return float(max(d.get(solution, f"{SLACK_BLOCK}@{k}")[0]
+                         for k in range(self.horizon_steps)))
 
     def select_obstacles(self, inputs: MpcInputs, guess: np.ndarray | None = None,
                          agent: int | None = None) -> ObstacleSelection:
@@ -196,6 +214,9 @@ def build_transport_problem(
     keys = [SELF] if local else [str(r) for r in range(na)]
     name = f"{'local' if local else 'centralized'}_{na}agents"
     b = StagewiseBuilder(name, n)
+    slots = settings.safety.obstacle_slots
+    soft = settings.safety.soft_barriers and slots > 0
+    slack: list[ca.SX] = []
 
     # -- variables, stage by stage
     x_robot: dict[str, list[ca.SX]] = {key: [] for key in keys}
@@ -212,6 +233,8 @@ def build_transport_problem(
             u_robot[key].append(b.input(k, f"grf_{key}", GRF_SIZE))
         for j in range(na):
             wrench[j].append(b.input(k, f"wrench_{j}", WRENCH_SIZE))
+        if soft:
+            slack.append(b.input(k, SLACK_BLOCK, 1))
 
     # -- parameters
     model_robot = {key: b.parameter(f"model_{key}", ROBOT_MODEL_SIZE) for key in keys}
@@ -221,7 +244,6 @@ def build_transport_problem(
     ref_robot = {key: b.parameter(f"ref_{key}", STATE_SIZE * n) for key in keys}
     ref_payload = b.parameter("ref_payload", STATE_SIZE * n)
     feet = {key: b.parameter(f"feet_{key}", 12 * n) for key in keys}
-    slots = settings.safety.obstacle_slots
     obstacles = b.parameter("obstacles", OBSTACLE_PARAMETER_SIZE * slots)
     selector = b.parameter("self_selector", na) if local else None
 
@@ -294,7 +316,8 @@ def build_transport_problem(
                     for x, a in bodies
                     for o in range(slots)
                 ]
-            b.path(k, "barriers", ca.vertcat(*barriers), 0.0, np.inf)
+            rows = ca.vertcat(*barriers)
+            b.path(k, "barriers", rows + slack[k] if soft else rows, 0.0, np.inf)
 
     # -- cost
     cost = settings.cost
@@ -313,6 +336,9 @@ def build_transport_problem(
             b.cost(cost.ground_reaction_force * ca.sumsqr(u_robot[key][k]))
         for j in range(na):
             b.cost(shared_cost_copies * _quadratic(wrench[j][k], r_wrench))
+    for sigma in slack:
+        b.cost(safety.slack_penalty_linear * sigma
+               + safety.slack_penalty_quadratic * sigma * sigma)
     if local:
         weights = consensus_weights(settings, na)
         target = b.parameter("consensus_target", weights.size)

@@ -88,6 +88,31 @@ def _bench_sim(args: argparse.Namespace) -> int:
     return 0
 
 
+def _bench_obstacles(args: argparse.Namespace) -> int:
+    from deploy.bench.obstacle_family import family, format_table, run_case, write_json
+    from deploy.runtime.codegen_cache import CompiledCodeCache
+
+    cases = [case for case in family() if not args.cases or case.name in args.cases]
+    unknown = set(args.cases or []) - {case.name for case in family()}
+    if unknown:
+        print(f"porter bench obstacles: unknown cases {sorted(unknown)}; known: "
+              f"{[case.name for case in family()]}")
+        return 2
+    print(f"porter bench obstacles: {len(cases)} cases"
+          + (" with the baseline (hard barriers, no braking, no governor)"
+             if args.baseline else ""))
+    cache = CompiledCodeCache()
+    rows = []
+    for case in cases:
+        rows.append(run_case(case, cache, baseline=args.baseline))
+        print(f"  {case.name}: {rows[-1]['outcome']}", flush=True)
+    print(format_table(rows))
+    if args.json:
+        write_json(rows, Path(args.json))
+        print(f"wrote {args.json}")
+    return 0
+
+
 def _bench_recorder(args: argparse.Namespace) -> int:
     import json
 
@@ -220,6 +245,14 @@ def build_parser() -> argparse.ArgumentParser:
     bench_sim.add_argument("--json", help="also write the rows as JSON {rows: [...]}")
     bench_sim.add_argument("--config", help="YAML file overriding MpcSettings fields")
     bench_sim.set_defaults(handler=_bench_sim)
+
+    bench_obs = bench_kinds.add_parser("obstacles", help="moving, head-on and symmetric "
+                                       "obstacle cases: outcome, min h, relaxed plans")
+    bench_obs.add_argument("cases", nargs="*", help="case names (default: all)")
+    bench_obs.add_argument("--baseline", action="store_true",
+                           help="hard barriers, no braking backup, no reference governor")
+    bench_obs.add_argument("--json", help="also write the rows as JSON {rows: [...]}")
+    bench_obs.set_defaults(handler=_bench_obstacles)
 
     bench_rec = bench_kinds.add_parser("recorder", help="flight-recorder overhead, rate, size, "
                                        "memory")

@@ -82,6 +82,8 @@ def run_sim(args: argparse.Namespace, base_settings: MpcSettings) -> int:
         Path(args.json).write_text(text + "\n")
         print(f"wrote {args.json}", file=sys.stderr)
     verdict = ("reached the goal" if summary["reached_goal"] else "did NOT reach the goal")
+    if summary["safety"].get("controlled_stop"):
+        verdict += " (controlled stop: plans stayed infeasible, the team braked and sat down)"
     print(f"porter sim: {verdict}; falls {summary['falls']}; min h {summary['min_h_m']}",
           file=sys.stderr)
     if stop():

@@ -15,10 +15,11 @@ NatNet) must be a loopback address (127.0.0.0/8). Units: SI, rates in Hz, times 
 from __future__ import annotations
 
 import ipaddress
+import socket
 from pathlib import Path
 from typing import Annotated, Literal
 
-from pydantic import Field, ValidationError, model_validator
+from pydantic import Field, ValidationError, field_validator, model_validator
 from pydantic_core import InitErrorDetails, PydanticCustomError
 
 from core.model.conventions import PAYLOAD_NAME
@@ -77,6 +78,9 @@ class MocapConfig(StrictModel):
     obstacle_bodies: list[str | None] = []  # per scenario obstacle: a body whose position is used
     stale_timeout_s: float = Field(0.1, gt=0, le=1.0)
     velocity_window_s: float = Field(0.08, gt=0, le=1.0)  # least-squares velocity from poses this old
+    # a body whose pose repeats exactly in more new frames than this is frozen (unseen): a
+    # tracked pose always jitters; 12 frames = 0.1 s at 120 Hz
+    max_repeated_frames: int = Field(12, ge=1, le=1000)
 
 
 class CanConfig(StrictModel):
@@ -128,12 +132,14 @@ class SimFault(StrictModel):
     """A fault the simulated world injects ``at_s`` simulated seconds after it starts running
     (tests and drills of the safety stop): ``estop_press`` (the CAN node's heartbeats say
     "stopped"), ``heartbeat_loss`` (they stop), ``mocap_loss`` (NatNet frames stop),
+    ``mocap_frozen`` (frames keep coming, frame numbers and timestamps rising, with the last
+    poses repeated exactly),
     ``robot_silent`` (``robot``'s fake stops publishing its state), ``robot_frozen`` (a
     Go2 ``robot``'s fake keeps publishing its last state, tick included)."""
 
     at_s: float = Field(ge=0)
-    kind: Literal["estop_press", "heartbeat_loss", "mocap_loss", "robot_silent",
-                  "robot_frozen"]
+    kind: Literal["estop_press", "heartbeat_loss", "mocap_loss", "mocap_frozen",
+                  "robot_silent", "robot_frozen"]
     robot: str | None = None
 
     @model_validator(mode="after")
@@ -185,6 +191,19 @@ class DeployConfig(StrictModel):
     preflight: PreflightConfig = PreflightConfig()
     recorder: RecorderSettings = RecorderSettings()
     sim: SimConfig = SimConfig()
+
+    @field_validator("network_interface")
+    @classmethod
+    def _interface_on_this_host(cls, name: str | None) -> str | None:
+        # Checked at load, so a typo is an error naming the field, not a DDS domain that
+        # fails to start (or, pasted into CycloneDDS's XML, a different configuration).
+        if name is None:
+            return None
+        available = sorted(interface for _, interface in socket.if_nameindex())
+        if name not in available:
+            raise ValueError(f"no network interface {name!r} on this host; it has "
+                             f"{', '.join(available)}")
+        return name
 
     @model_validator(mode="after")
     def _valid_sim_safety(self) -> DeployConfig:

@@ -71,6 +71,9 @@ class ReferenceSpec(StrictModel):
     speed_m_s: float = Field(gt=0, le=1.0)
     payload_yaw_rad: float = 0.0
     payload_height_m: float = Field(0.45, gt=0)
+    # Reference governor: while the payload lags the reference by more than this [m], the
+    # reference waits (its clock stops) instead of running away from a blocked team; None: off.
+    max_lag_m: float | None = Field(0.25, gt=0.05, le=5.0)
 
     @field_validator("waypoints_m")
     @classmethod
@@ -156,6 +159,9 @@ class Scenario(StrictModel):
     duration_s: float = Field(gt=0)
     seed: int = Field(0, ge=0)
     goal_tolerance_m: float = Field(0.15, gt=0)
+    # How the run is meant to end, checked by the tests of the shipped scenarios: at the goal,
+    # or (a case no plan can pass safely) braking to a controlled stop without a fall.
+    expected_outcome: Literal["goal", "controlled stop"] = "goal"
 
     @field_validator("team")
     @classmethod

@@ -15,7 +15,8 @@ its plan will take effect: the state predicted over the recent median delay from
 taking effect (``TeamController.compensation_s``, ``core.nmpc.delay_compensation``); a taken
 plan becomes the active one with stage 0 at that instant. ``step`` returns (solver failed,
 deadline missed) on ticks where a plan was taken, for ``SafetyInputs``; a plan flagged only for
-starting inside a safety margin is no solver failure, and the deadline (one NMPC period from
+starting inside a safety margin, or for relaxing its soft barriers, is no solver failure (the
+braking rule, ``TeamController.plan_taken``, counts those), and the deadline (one NMPC period from
 decision to taking effect) is None when the runner has none (lockstep, no modelled delay).
 
 On the tick after a plan took effect, the coupling F/T readings are logged against the plan's
@@ -83,6 +84,8 @@ class NmpcSchedule:
         self.deadline_misses = 0
         self.solver_failures = 0
         self.margin_flags = 0  # converged plans that start inside a safety margin
+        self.relaxed_plans = 0  # plans whose soft barriers used slack
+        self.braking = ""  # why the braking backup took over (TeamController.plan_taken)
         self._submitted: dict[int, tuple[float, tuple[np.ndarray, np.ndarray] | None]] = {}
         self._compare_wrenches = False
 
@@ -177,6 +180,12 @@ class NmpcSchedule:
         # plan, counted and logged (its warnings become /events) but not a failure.
         self.solver_failures += int(not plan.success)
         self.margin_flags += int(plan.start_inside_margin)
+        self.relaxed_plans += int(plan.relaxed)
+        braking = self.control.plan_taken(t, plan)
+        if braking is not None:
+            self.braking = braking
+            if self.recording is not None:
+                self.recording.warning(t, braking)
         if self.recording is not None:
             self.recording.nmpc_update(decision.time_s, result.update, decision.inputs, plan,
                                        decision.frame, decision.payload_estimate, truth)

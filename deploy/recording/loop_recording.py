@@ -10,6 +10,9 @@ robot. Ground truth (``/tf`` and ``/sim/ground_truth``) at ``ground_truth_hz``.
 
 from __future__ import annotations
 
+from collections.abc import Sequence
+from typing import Protocol
+
 import numpy as np
 
 from core.locomotion.whole_body_control import WbcOutput
@@ -22,6 +25,19 @@ from deploy.recording import log_format as fmt
 from deploy.recording.flight_recorder import FlightRecorder
 from deploy.recording.messages import porter_log_pb2 as pb
 from drivers.interfaces import JointCommand, MocapFrame, RobotMeasurement
+
+
+class WbcStepRecord(Protocol):
+    """What is logged of one robot's WBC tick (``deploy.runtime.controller.WbcStep``)."""
+
+    @property
+    def command(self) -> JointCommand: ...
+    @property
+    def output(self) -> WbcOutput: ...
+    @property
+    def stance(self) -> np.ndarray: ...
+    @property
+    def foot_targets_m(self) -> np.ndarray: ...
 
 
 class LoopRecording:
@@ -59,6 +75,9 @@ class LoopRecording:
     def error(self, time_s: float, text: str) -> None:
         self.event(time_s, text, pb.Event.ERROR)
 
+    def warning(self, time_s: float, text: str) -> None:
+        self.event(time_s, text, pb.Event.WARNING)
+
     def transition(self, time_s: float, text: str, fault: bool) -> None:
         """A safety state transition (source ``safety``; a safe stop is an error)."""
         self.recorder.event(time_s, text, source="safety",
@@ -70,6 +89,22 @@ class LoopRecording:
         topics = self._topics[robot]
         self.recorder.log(topics["state"], fmt.robot_state(robot, measurement), time_s)
         self.recorder.log(topics["command"], fmt.joint_command(time_s, robot, command), time_s)
+
+    def team_tick(self, time_s: float, names: list[str],
+                  measurements: dict[str, RobotMeasurement], sent: dict[str, JointCommand],
+                  steps: Sequence[WbcStepRecord] | None) -> None:
+        """One loop tick of every robot that was measured and commanded: its WBC tick where the
+        command sent is the WBC's own (``steps`` in ``names`` order), else state and command."""
+        for i, name in enumerate(names):
+            measurement, command = measurements.get(name), sent.get(name)
+            if measurement is None or command is None:
+                continue
+            if steps is not None and command is steps[i].command:
+                step = steps[i]
+                self.wbc_tick(time_s, name, measurement, command, step.output, step.stance,
+                              step.foot_targets_m)
+            else:
+                self.robot_tick(time_s, name, measurement, command)
 
     def wbc_tick(self, time_s: float, robot: str, measurement: RobotMeasurement,
                  command: JointCommand, output: WbcOutput, stance: np.ndarray,

@@ -34,6 +34,7 @@ from core.nmpc.delay_compensation import predict_states
 from core.nmpc.inputs_builder import build_mpc_inputs
 from core.nmpc.mpc_inputs import MpcInputs
 from core.nmpc.mpc_plan import MpcPlan
+from core.nmpc.reference import BrakingReference, WaypointReference
 from core.nmpc.settings import MpcSettings
 from deploy.config.scenario import Scenario
 from deploy.nmpc_runtime.process_executor import ProcessExecutor
@@ -135,7 +136,12 @@ class TeamController:
         self.settings = scenario.mpc_settings(base_settings or MpcSettings())
         team_settings = scenario.team_settings()
         self.team = TeamModel.from_settings(team_settings, srb_parameters)
-        self.reference = scenario.reference.to_reference()
+        self.reference: WaypointReference | BrakingReference = scenario.reference.to_reference()
+        self.braking_since_s: float | None = None  # when the braking backup took over
+        self.reference_held_s = 0.0  # reference-clock time the governor held back
+        self.reference_holding = False  # the governor holds the reference at this decision
+        self._last_decision_s: float | None = None
+        self._flagged_in_row = 0
         self.obstacles = scenario.core_obstacles()
         gait = TrotGait(scenario.gait.period_s, scenario.gait.duty_factor)
         self.robots: list[RobotControl] = []
@@ -180,6 +186,8 @@ class TeamController:
     def reset(self, measurements: list[RobotMeasurement], start_s: float = 0.0) -> None:
         """Standing start at ``start_s``: every leg in stance at its measured foot position."""
         self.start_s = start_s
+        self.reference_held_s, self._last_decision_s = 0.0, None
+        self.reference_holding = False
         for robot, measurement in zip(self.robots, measurements, strict=True):
             state = measurement_state(measurement)
             robot.legs.reset(robot.wbc.srb_state(state), robot.wbc.foot_positions(state))
@@ -190,7 +198,29 @@ class TeamController:
         return None if elapsed < SETTLE_S else elapsed - SETTLE_S
 
     def reference_time(self, t: float) -> float:
-        return max(t - self.start_s - SETTLE_S, 0.0)
+        """The reference's clock at ``t``: time since the gait started, less what the reference
+        governor held back (``scenario.reference.max_lag_m``)."""
+        return max(t - self.start_s - SETTLE_S - self.reference_held_s, 0.0)
+
+    def _govern_reference(self, t: float, payload: np.ndarray) -> None:
+        """At a decision at ``t``: if the payload estimate lags the reference by more than
+        ``max_lag_m`` along the reference's direction of travel, the time since the previous
+        decision is held back (the reference waits for the team: an obstacle in the way, a
+        push, a heavy payload) and the reference stands still until the next decision (zero
+        reference velocities for the NMPC and the footholds). A sideways detour around an
+        obstacle is no lag."""
+        max_lag_m = self.scenario.reference.max_lag_m
+        previous, self._last_decision_s = self._last_decision_s, t
+        self.reference_holding = False
+        if max_lag_m is None or previous is None or self.braking_since_s is not None:
+            return
+        desired = self.reference.payload_state(self.reference_time(t))
+        speed = float(np.linalg.norm(desired[3:5]))
+        lag_m = (float(np.dot(desired[0:2] - payload[0:2], desired[3:5])) / speed
+                 if speed > 0.0 else 0.0)
+        if lag_m > max_lag_m:
+            self.reference_held_s += max(t - previous, 0.0)
+            self.reference_holding = True
 
     # --- NMPC ----------------------------------------------------------------------------
     def nmpc_inputs(self, t: float, measurements: list[RobotMeasurement], frame: MocapFrame,
@@ -209,6 +239,7 @@ class TeamController:
             for robot, m in zip(self.robots, measurements, strict=True)])
         payload = self.estimator.estimate(robot_states, self.payload_estimate)
         self.payload_estimate = payload
+        self._govern_reference(t, payload)
         if delay_s > 0.0 and active is not None:
             plan, plan_start_s = active
             robot_states, payload = predict_states(plan, t - plan_start_s, delay_s,
@@ -228,8 +259,35 @@ class TeamController:
         inputs = build_mpc_inputs(
             self.team, self.reference, settings, robot_states, payload, self.reference_time(t),
             foot_horizon, self.obstacles if obstacles is None else obstacles, t - self.start_s,
-            hold_pose=t - self.start_s < SETTLE_S)
+            hold_pose=t - self.start_s < SETTLE_S, stand_still=self.reference_holding)
         return NmpcDecision(t, inputs, frame, self.payload_estimate)
+
+    def plan_taken(self, t: float, plan: MpcPlan) -> str | None:
+        """Count ``plan`` (taken at ``t``) toward the braking rule (``MpcSettings.braking``):
+        the cause text when this plan starts the braking backup, else None."""
+        settings = self.settings.braking
+        infeasible = plan.relaxed or not plan.success
+        self._flagged_in_row = self._flagged_in_row + 1 if infeasible else 0
+        if (not settings.enabled or self.braking_since_s is not None
+                or self._flagged_in_row < settings.after_flagged_updates):
+            return None
+        self.begin_braking(t)
+        what = f"barrier slack {plan.barrier_slack_m:.3f} m" if plan.relaxed else "failed solve"
+        return (f"braking: {self._flagged_in_row} infeasible NMPC plans in a row (last: {what}); "
+                f"the team decelerates at {settings.deceleration_m_s2} m/s^2 and holds")
+
+    def begin_braking(self, t: float) -> None:
+        """From now on the payload reference brakes from the latest payload estimate along its
+        velocity, then holds (``BrakingReference``); latched."""
+        payload = self.payload_estimate
+        if payload is None:
+            payload = self.reference.payload_state(self.reference_time(t))
+        self.reference = BrakingReference(
+            start_time_s=self.reference_time(t), position_m=payload[0:2].copy(),
+            velocity_m_s=payload[3:5].copy(),
+            height_m=float(self.reference.payload_state(self.reference_time(t))[2]),
+            yaw_rad=float(payload[8]), deceleration_m_s2=self.settings.braking.deceleration_m_s2)
+        self.braking_since_s = t
 
     def compensation_s(self, recent_delays_s: list[float]) -> float:
         """The delay the next plan is planned for (``controller.delay_compensation_s``): the
@@ -252,6 +310,8 @@ class TeamController:
         ts = self.settings.sample_period_s
         gait_time = self.gait_time(t)
         reference = self.reference.payload_state(self.reference_time(t))
+        if self.reference_holding:  # the governor holds: footholds for standing still
+            reference[3:6] = 0.0
         steps = []
         for i, (robot, measurement) in enumerate(zip(self.robots, measurements, strict=True)):
             state = measurement_state(measurement)

@@ -50,8 +50,13 @@ class MocapTracker:
     ``poll`` (once per loop tick, loop thread) takes in a new frame if there is one."""
 
     def __init__(self, client: MocapSource, bodies: dict[str, str], window_s: float,
-                 clock: Clock) -> None:
+                 clock: Clock, max_repeated_frames: int | None = None) -> None:
         self.client = client
+        # A tracked pose always jitters (sensor noise): the same pose bit for bit in more than
+        # this many new frames in a row is a frozen tracker, and the body counts as unseen
+        # (so its age grows into the MoCap timeout). None: not checked.
+        self.max_repeated_frames = max_repeated_frames
+        self.repeated_frames: dict[str, int] = dict.fromkeys(bodies, 0)
         self.bodies = bodies  # porter name -> Motive name
         self.window_s = window_s
         self.clock = clock
@@ -73,6 +78,8 @@ class MocapTracker:
             if pose is None:
                 continue
             poses[name] = pose
+            if self._frozen(name, pose):
+                continue
             self.last_seen_s[name] = received_s
             history = self._history[name]
             history.append((raw.time_s, pose[0]))
@@ -80,6 +87,15 @@ class MocapTracker:
                 history.popleft()
         self.frame = MocapFrame(raw.time_s, poses)
         return self.frame
+
+    def _frozen(self, name: str, pose: tuple[np.ndarray, np.ndarray]) -> bool:
+        """Count ``name``'s pose repeating its previous one exactly; True once frozen."""
+        previous = self.frame.poses.get(name) if self.frame is not None else None
+        same = previous is not None and np.array_equal(previous[0], pose[0]) \
+            and np.array_equal(previous[1], pose[1])
+        self.repeated_frames[name] = self.repeated_frames[name] + 1 if same else 0
+        limit = self.max_repeated_frames
+        return limit is not None and self.repeated_frames[name] > limit
 
     def age_s(self, names: list[str] | None = None) -> float | None:
         """Seconds since the stalest of ``names`` (default all bodies) was last seen; None
@@ -159,7 +175,8 @@ def open_links(config: DeployConfig, clock: Clock = time.monotonic) -> TeamLinks
             multicast_group=mocap_config.multicast_group,
             local_address=mocap_config.local_address, body_ids=mocap_config.body_ids,
             stale_timeout_s=mocap_config.stale_timeout_s), clock=clock)
-        tracker = MocapTracker(mocap, bodies, mocap_config.velocity_window_s, clock)
+        tracker = MocapTracker(mocap, bodies, mocap_config.velocity_window_s, clock,
+                               mocap_config.max_repeated_frames)
     except NatNetError as error:
         problems.append(f"MoCap: {error}")
     drivers: dict[str, RobotDriver] = {}

@@ -22,6 +22,10 @@ States (``deploy.safety.supervisor``), by ``sequence``:
   at ``duration_s`` or a stop request RUNNING -> DONE and the loop ends.
 In both, any fault -> SAFE_STOP (damping only, latched) -> DONE after ``final_damping_s``; a
 plan older than ``rates.max_plan_age_s`` while RUNNING trips the safe stop (NMPC stalled).
+Infeasible plans are no fault: after ``MpcSettings.braking.after_flagged_updates`` of them in a
+row the controller brakes and holds (``TeamController.plan_taken``), and
+``braking.controlled_stop_s`` later RUNNING -> SITTING_DOWN -> DONE (a controlled stop), in both
+sequences.
 Every transition goes to the flight recorder as an event (source ``safety``).
 """
 
@@ -43,7 +47,7 @@ from deploy.runtime.clock import LoopClock
 from deploy.runtime.controller import TeamController, WbcStep
 from deploy.runtime.links import TeamLinks
 from deploy.runtime.timing import PeriodStats, TickStages
-from deploy.safety.checks import SupervisorSettings, robot_limits
+from deploy.safety.checks import SupervisorSettings, clip_torque, robot_limits
 from deploy.safety.posture import PostureMove, sitting_posture, standing_posture
 from deploy.safety.preflight import PreflightReport
 from deploy.safety.supervisor import SafetyInputs, SafetyState, SafetySupervisor, Transition
@@ -122,6 +126,8 @@ class ControlLoop:
         self.ended_by = ""
         self.stopped_early = False
         self._overruns_seen = 0  # the clock's overrun count at the last tick
+        self.controlled_stop = False  # the braking backup ended the run with a sit-down
+        self._braking_said = False
 
     def now(self) -> float:
         return self.clock.now() - self.t0
@@ -137,6 +143,9 @@ class ControlLoop:
             "nmpc_updates": nmpc.updates, "nmpc_deadline_misses": nmpc.deadline_misses,
             "nmpc_failed_updates": nmpc.solver_failures,
             "nmpc_margin_flags": nmpc.margin_flags,
+            "nmpc_relaxed_plans": nmpc.relaxed_plans,
+            "braking_since_s": self.control.braking_since_s,
+            "controlled_stop": self.controlled_stop,
             "torque_saturations": dict(self.saturations),
             "wbc_failed_ticks": supervisor.wbc_failures.failed_ticks,
         }
@@ -218,7 +227,8 @@ class ControlLoop:
         stages.mark("filter")
         self._send(sent)
         stages.mark("send")
-        self._record(t, measurements, sent, steps)
+        if self.recording is not None:
+            self.recording.team_tick(t, self.names, measurements, sent, steps)
         stages.mark("record")
         running = self.supervisor.state == S.RUNNING
         if running:
@@ -281,37 +291,13 @@ class ControlLoop:
 
     def _saturate(self, name: str, command: JointCommand, measurement: RobotMeasurement | None
                   ) -> JointCommand:
-        """Clip the firmware law's torque at the measured state to the limit (as the motor
-        would) by trimming the feed-forward, and count it, when it is at most
-        ``SATURATION_MARGIN`` past the limit: the WBC's own torques respect the limits but its
-        damping term ``kd (qdd dt)`` can push the sum just past them; a posture move's PD
-        starting on a leg in mid-swing (sit-down) brakes it with kd (0 - dq). A command further
-        past a limit is left alone: the supervisor's torque fault stops the team."""
+        """``clip_torque`` at robot ``name``'s limit, counting the clipped ticks."""
         if measurement is None:
             return command
         limit = self.limits[name].torque_nm * self.settings.safety.torque_limit_fraction
-        total = command.torque_for(measurement.position_rad, measurement.velocity_rad_s)
-        clipped = np.clip(total, -limit, limit)
-        if np.array_equal(clipped, total) or not np.all(
-                np.abs(total) <= (1.0 + SATURATION_MARGIN) * limit):
-            return command
-        self.saturations[name] += 1
-        return replace(command, torque_nm=command.torque_nm + clipped - total)
-
-    def _record(self, t: float, measurements: dict[str, RobotMeasurement],
-                sent: dict[str, JointCommand], steps: list[WbcStep] | None) -> None:
-        if self.recording is None:
-            return
-        for i, name in enumerate(self.names):
-            measurement, command = measurements.get(name), sent.get(name)
-            if measurement is None or command is None:
-                continue
-            if steps is not None and command is steps[i].command:
-                step = steps[i]
-                self.recording.wbc_tick(t, name, measurement, command, step.output,
-                                        step.stance, step.foot_targets_m)
-            else:
-                self.recording.robot_tick(t, name, measurement, command)
+        clipped = clip_torque(command, measurement, limit, SATURATION_MARGIN)
+        self.saturations[name] += int(clipped is not command)
+        return clipped
 
     def _moves_to(self, t: float, goal: dict[str, np.ndarray], duration_s: float,
                   measurements: dict[str, RobotMeasurement]) -> None:
@@ -343,7 +329,16 @@ class ControlLoop:
                  link_errors: dict[str, str], frame: MocapFrame | None) -> bool:
         supervisor, state, posture = self.supervisor, self.supervisor.state, self.settings.posture
         elapsed = t - self.since.get(state, t)
-        if state == S.PREFLIGHT:
+        braking_since = self.control.braking_since_s
+        if self.nmpc.braking and not self._braking_said:
+            self._braking_said = True
+            self.say(f"[{t:7.3f} s] {self.nmpc.braking}")
+        if (state == S.RUNNING and braking_since is not None
+                and t - braking_since >= self.control.settings.braking.controlled_stop_s):
+            self.controlled_stop = True
+            self._sit_down(t, measurements, f"controlled stop: braking since "
+                           f"{braking_since:.3f} s ({self.nmpc.braking})")
+        elif state == S.PREFLIGHT:
             self.report = self.preflight(measurements, link_errors) if self.preflight else None
             if self.stop():
                 self.ended_by = "stop requested during pre-flight"
@@ -394,5 +389,5 @@ class ControlLoop:
 
     def _sit_down(self, t: float, measurements: dict[str, RobotMeasurement], why: str) -> None:
         self.ended_by = why
-        self.supervisor.begin_sit_down(t)
+        self.supervisor.begin_sit_down(t, why if self.controlled_stop else None)
         self._moves_to(t, self.sitting, self.settings.posture.sit_down_s, measurements)

@@ -40,6 +40,8 @@ class RunMetrics:
     solve_iterations: list[int] = field(default_factory=list)
     solve_ms: list[float] = field(default_factory=list)
     flagged_plans: int = 0
+    relaxed_plans: int = 0  # plans whose soft barriers used slack (safety infeasible)
+    max_barrier_slack_m: float = 0.0
     payload_residual: list[float] = field(default_factory=list)
     wrench_residual: list[float] = field(default_factory=list)
     position_residual_m: list[float] = field(default_factory=list)
@@ -83,6 +85,8 @@ class RunMetrics:
         self.solve_iterations.extend(s.iterations for s in plan.solves)
         self.solve_ms.extend(1e3 * s.wall_time_s for s in plan.solves)
         self.flagged_plans += int(plan.flagged)
+        self.relaxed_plans += int(plan.relaxed)
+        self.max_barrier_slack_m = max(self.max_barrier_slack_m, plan.barrier_slack_m)
         if plan.admm_iterations:
             last = plan.admm_iterations[-1]
             self.payload_residual.append(float(np.sqrt(np.mean(last.primal_payload_rms ** 2))))
@@ -150,6 +154,8 @@ class RunMetrics:
             "nlp_iterations_mean": float(np.mean(self.solve_iterations))
             if self.solve_iterations else None,
             "flagged_plans": self.flagged_plans,
+            "relaxed_plans": self.relaxed_plans,
+            "max_barrier_slack_m": self.max_barrier_slack_m,
             "loop_tick_ms": _distribution(self.loop_tick_ms),
             "wbc_tick_ms": {"median": float(np.median(ticks)),
                             "p95": float(np.percentile(ticks, 95))},

@@ -182,6 +182,7 @@ class SimRun:
         yaw = float(euler_from_rotation(rotation_from_quaternion_wxyz(quaternion))[2])
         desired = self.control.reference.payload_state(self.control.reference_time(t))
         bodies = [position[0:2]]
+        sitting = self.loop is not None and self.loop.controlled_stop
         for robot in self.control.robots:
             base_position, base_quaternion = sim.base_pose(robot.name)
             state = robot.wbc.srb_state(FloatingBaseState(
@@ -189,8 +190,9 @@ class SimRun:
                 np.zeros(12)))
             bodies.append(state[0:2])
             nominal = robot.legs.robot.nominal_height_m
-            if state[2] < FALL_HEIGHT_FRACTION * nominal or max(abs(state[6]), abs(state[7])) \
-                    > MAX_TILT_RAD:
+            # A controlled stop sits the team down on purpose: then only a tilt is a fall.
+            low = state[2] < FALL_HEIGHT_FRACTION * nominal and not sitting
+            if low or max(abs(state[6]), abs(state[7])) > MAX_TILT_RAD:
                 self.metrics.record_fall(robot.name)
         h = np.array([[np.linalg.norm(body - o.row(t, 0.0)[0:2]) - self.settings.safety
                        .safety_distance_m - o.radius_m for o in self.obstacles]

@@ -14,7 +14,7 @@ from __future__ import annotations
 
 import math
 from collections import deque
-from dataclasses import dataclass, fields
+from dataclasses import dataclass, fields, replace
 from functools import cache
 
 import numpy as np
@@ -60,8 +60,11 @@ class SupervisorSettings(StrictModel):
         0.5, ge=0.1, le=1.0, description="lowest base height, fraction of the nominal standing "
                                          "height (checked while ARMED and RUNNING)")
     max_joint_velocity_rad_s: float = Field(30.0, gt=0.0, le=60.0)
+    # A leg pressed against its end stop reads a little past the URDF limit (MuJoCo's soft
+    # limits; encoder offsets on robots): with no margin, a stretched leg in a tight spot was a
+    # safe stop, and the damping that followed made the loaded team fall.
     joint_limit_margin_rad: float = Field(
-        0.0, ge=0.0, le=0.2,
+        0.1, ge=0.0, le=0.2,
         description="joint positions within [lower - margin, upper + margin] are fine [rad]")
     torque_limit_fraction: float = Field(
         1.0, gt=0.0, le=1.0, description="commanded |tau| beyond fraction * limit trips")
@@ -285,3 +288,19 @@ class DeadlineOverrunWindow:
             return (f"{self.what}: {len(times)} within {self.window_s} s "
                     f"(budget {self.budget})")
         return None
+
+
+def clip_torque(command: JointCommand, measurement: RobotMeasurement, limit_nm: np.ndarray,
+                margin: float) -> JointCommand:
+    """``command`` with its feed-forward trimmed so that the firmware law's torque at the
+    measured state stays within ``limit_nm`` (as the motor would clip it), when that torque is
+    at most ``margin`` (a fraction) past the limit; else ``command`` itself (the same object):
+    within the limit nothing changes, and further past it the supervisor's torque fault stops
+    the team. The WBC's own torques respect the limits, but its damping term ``kd (qdd dt)``
+    can push the sum just past them; a posture move's PD starting on a leg in mid-swing
+    (sit-down) brakes it with kd (0 - dq)."""
+    total = command.torque_for(measurement.position_rad, measurement.velocity_rad_s)
+    clipped = np.clip(total, -limit_nm, limit_nm)
+    if np.array_equal(clipped, total) or not np.all(np.abs(total) <= (1.0 + margin) * limit_nm):
+        return command
+    return replace(command, torque_nm=command.torque_nm + clipped - total)

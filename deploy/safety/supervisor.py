@@ -147,8 +147,10 @@ class SafetySupervisor:
     def begin_run(self, time_s: float) -> None:
         self._request("begin_run", time_s)
 
-    def begin_sit_down(self, time_s: float) -> None:
-        self._request("begin_sit_down", time_s)
+    def begin_sit_down(self, time_s: float, cause: str | None = None) -> None:
+        """Sit down (a planned end, or with ``cause`` a controlled stop: the braking backup
+        held the team and the plans stayed infeasible)."""
+        self._request("begin_sit_down", time_s, cause)
 
     def finish(self, time_s: float) -> None:
         self._request("finish", time_s)
@@ -178,7 +180,7 @@ class SafetySupervisor:
         if cause is not None:
             self.trigger_safe_stop(time_s, cause)
 
-    def _request(self, request: str, time_s: float) -> None:
+    def _request(self, request: str, time_s: float, cause: str | None = None) -> None:
         allowed, target = _REQUESTS[request]
         if self.state not in allowed:
             raise SafetyError(
@@ -186,7 +188,7 @@ class SafetySupervisor:
                 f"{', '.join(sorted(s.name for s in allowed))}"
                 + (f" (safe stop: {self.fault})" if self.fault else ""))
         self._has_been_armed |= target in (SafetyState.ARMED, SafetyState.RUNNING)
-        self._move(time_s, target, f"requested: {request}")
+        self._move(time_s, target, cause or f"requested: {request}")
 
     def _trip(self, time_s: float, cause: str) -> None:
         self.fault = cause

@@ -192,6 +192,8 @@ class SimWorld:
                 self.can_node.stop_heartbeat()
             elif fault.kind == "mocap_loss":
                 self.mocap_stopped = True
+            elif fault.kind == "mocap_frozen":
+                self.natnet.frozen = True
             elif fault.kind == "robot_silent" and fault.robot is not None:
                 self.silent.add(fault.robot)
             elif fault.kind == "robot_frozen" and fault.robot is not None:

@@ -96,6 +96,9 @@ class FakeNatNetServer:
         self.connects = self.keepalives_received = self.model_requests = 0
         self.frames_published = self.frames_dropped = 0
         self._frame_number = 0
+        # fault injection: frames keep coming (numbers, timestamps rising) with the last poses
+        self.frozen = False
+        self._last_bodies: list[RigidBodySample] = []
         self._command_socket = socket.socket(socket.AF_INET, socket.SOCK_DGRAM)
         self._command_socket.bind((host, command_port))
         self._data_socket = socket.socket(socket.AF_INET, socket.SOCK_DGRAM)
@@ -143,7 +146,8 @@ class FakeNatNetServer:
         ticks = int(self._clock() * _TICKS_PER_S)
         bodies = []
         with self._lock:
-            for name, (position_m, quaternion_wxyz) in self._pose_source().items():
+            for name, (position_m, quaternion_wxyz) in (
+                    {} if self.frozen and self._last_bodies else self._pose_source()).items():
                 if name not in self._body_ids:
                     self._body_ids[name] = max(self._body_ids.values(), default=0) + 1
                     self._models_changed = True
@@ -152,6 +156,9 @@ class FakeNatNetServer:
                 bodies.append(RigidBodySample(
                     self._body_ids[name], tuple(position_m), (x, y, z, w),
                     tracking_valid=name not in self._untracked))
+            if self.frozen and self._last_bodies:
+                bodies = list(self._last_bodies)
+            self._last_bodies = bodies
             params = 0x02 if self._models_changed else 0
             self._models_changed = False
         packet = pack_frame_of_data(FrameOfData(

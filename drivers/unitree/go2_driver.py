@@ -27,6 +27,7 @@ from __future__ import annotations
 import logging
 import time
 from collections.abc import Callable
+from xml.sax.saxutils import quoteattr
 
 from cyclonedds._clayer import ddspy_take, ddspy_write
 from cyclonedds.core import (
@@ -75,9 +76,10 @@ _DOMAINS: dict[int, tuple[Domain, str]] = {}  # process-wide: CycloneDDS allows 
 
 
 def cyclonedds_config(network_interface: str) -> str:
-    """CycloneDDS XML configuration using only ``network_interface``."""
+    """CycloneDDS XML configuration using only ``network_interface`` (XML-escaped: the name
+    is data, never markup)."""
     return ("<CycloneDDS><Domain id=\"any\"><General><Interfaces>"
-            f"<NetworkInterface name=\"{network_interface}\"/>"
+            f"<NetworkInterface name={quoteattr(network_interface)}/>"
             "</Interfaces></General></Domain></CycloneDDS>")
 
 

@@ -10,13 +10,15 @@ from core.model.srb_model import GRF_SIZE, STATE_SIZE, WRENCH_SIZE
 from core.model.team import TeamModel
 from core.model.team_settings import AgentSettings, TeamSettings
 from core.nmpc.mpc_inputs import MpcInputs
-from core.nmpc.settings import MpcSettings
-from core.nmpc.transport_problem import TransportProblem, build_transport_problem
+from core.nmpc.settings import MpcSettings, SafetySettings
+from core.nmpc.transport_problem import SLACK_BLOCK, TransportProblem, build_transport_problem
 from drivers.robot_descriptions import srb_parameters
 
 N_X, N_U, N_LAMBDA = STATE_SIZE, GRF_SIZE, WRENCH_SIZE
 # Paper, Table I: decision variables (local, centralized) for N = 8.
 PAPER_COUNTS = {2: (408, 612), 3: (456, 864), 4: (504, 1116)}
+# The paper's problem has hard barriers; soft barriers (the default) add one slack per stage.
+HARD = SafetySettings(soft_barriers=False)
 
 
 def _centralized_count(agents: int, horizon: int) -> int:
@@ -30,7 +32,7 @@ def _local_count(agents: int, horizon: int) -> int:
 @pytest.fixture(scope="module")
 def problems() -> dict[tuple[int, bool], TransportProblem]:
     return {
-        (n, local): build_transport_problem(MpcSettings(), agent_count=n, local=local)
+        (n, local): build_transport_problem(MpcSettings(safety=HARD), agent_count=n, local=local)
         for n in PAPER_COUNTS
         for local in (False, True)
     }
@@ -60,11 +62,21 @@ def test_decision_variable_counts(problems, agents: int) -> None:
 @pytest.mark.parametrize("agents", [2, 3])
 @pytest.mark.parametrize("horizon", [3, 5])
 def test_counts_follow_the_formula_for_other_horizons(agents: int, horizon: int) -> None:
-    settings = MpcSettings(horizon_steps=horizon)
+    settings = MpcSettings(horizon_steps=horizon, safety=HARD)
     assert (build_transport_problem(settings, agents).nlp.variable_count
             == _centralized_count(agents, horizon))
     assert (build_transport_problem(settings, agents, local=True).nlp.variable_count
             == _local_count(agents, horizon))
+    # soft barriers: one slack per stage k < N, an input of that stage
+    soft = MpcSettings(horizon_steps=horizon)
+    assert soft.safety.soft_barriers
+    for local, count in ((False, _centralized_count(agents, horizon)),
+                         (True, _local_count(agents, horizon))):
+        problem = build_transport_problem(soft, agents, local=local)
+        assert problem.nlp.variable_count == count + horizon
+        assert problem.soft_barriers
+        assert [problem.nlp.decision.offsets[f"{SLACK_BLOCK}@{k}"][1]
+                for k in range(horizon)] == [1] * horizon
 
 
 @pytest.mark.parametrize("local", [False, True])
@@ -150,6 +162,7 @@ def _stage_rows(problem: TransportProblem, stage: int) -> slice:
 
 def test_local_problem_reproduces_centralized_constraints_for_every_agent() -> None:
     settings = MpcSettings(horizon_steps=3)
+    assert settings.safety.soft_barriers
     horizon, agents = settings.horizon_steps, 3
     team = _team()
     rng = np.random.default_rng(0)
@@ -182,6 +195,7 @@ def test_local_problem_reproduces_centralized_constraints_for_every_agent() -> N
                 dl.put(w_l, f"grf_self@{k}", dc.get(w_c, f"grf_{agent}@{k}"))
                 for j in range(agents):
                     dl.put(w_l, f"wrench_{j}@{k}", dc.get(w_c, f"wrench_{j}@{k}"))
+                dl.put(w_l, f"{SLACK_BLOCK}@{k}", dc.get(w_c, f"{SLACK_BLOCK}@{k}"))
         p_l = local.parameter_vector(team, inputs, agent=agent, consensus_target=target)
         values_l = np.array(g_l(w_l, p_l)).squeeze()
         for k in range(horizon):

@@ -129,7 +129,9 @@ FAULT_AT_S = 3.0  # simulated s after the world starts: running by then (stand-u
     ({"kind": "mocap_loss"}, "MoCap lost: no frame for", 0.1 + 0.05),
     ({"kind": "robot_silent", "robot": "go2_1"}, "robot link lost: go2_1", 0.1 + 0.05),
     ({"kind": "robot_frozen", "robot": "go2_0"}, "'frozen tick'", 0.1 + 0.05),
-], ids=["estop", "mocap", "link", "frozen"])
+    # 12 repeated frames at 120 Hz make a body unseen, then the MoCap timeout
+    ({"kind": "mocap_frozen"}, "MoCap lost: no frame for", 12 / 120 + 0.1 + 0.05),
+], ids=["estop", "mocap", "link", "frozen", "mocap_frozen"])
 def test_a_fault_while_running_leaves_only_damping_reaching_the_motors(
         tmp_path: Path, capsys: pytest.CaptureFixture[str], fault: dict, cause: str,
         reaction_s: float) -> None:
@@ -228,6 +230,21 @@ def test_an_invalid_config_field_is_named(tmp_path: Path,
     assert main(["deploy", "--config", str(path), "--backend", "sim", "--yes"]) == 2
     err = capsys.readouterr().err
     assert "robots.go2_0.go2.domain" in err and "Extra inputs are not permitted" in err
+
+
+def test_network_interface_must_exist_on_this_host(tmp_path: Path,
+                                                    capsys: pytest.CaptureFixture[str]) -> None:
+    data = yaml.safe_load(TWO_GO2.read_text())
+    data["network_interface"] = "enp9s9-absent"
+    path = tmp_path / "bad.yaml"
+    path.write_text(yaml.safe_dump(data))
+    assert main(["deploy", "--config", str(path), "--backend", "sim", "--yes"]) == 2
+    err = capsys.readouterr().err
+    assert "network_interface" in err and "no network interface 'enp9s9-absent'" in err
+    assert "lo" in err  # the interfaces it has are listed
+    data["network_interface"] = "lo"
+    path.write_text(yaml.safe_dump(data))
+    assert load_deploy_config(path)[0].network_interface == "lo"
 
 
 def test_config_cross_checks_name_the_field(tmp_path: Path) -> None:

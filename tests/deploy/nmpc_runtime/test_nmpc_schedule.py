@@ -75,6 +75,17 @@ def test_failed_solves_and_margin_flags_are_told_apart() -> None:
     assert schedule.solver_failures == 1 and schedule.margin_flags == 1
 
 
+def test_relaxed_plans_are_no_solver_failures_but_reach_the_braking_rule() -> None:
+    control = FakeControl(plans=[plan(), plan(relaxed=True), plan()])
+    clock = FakeClock()
+    schedule = _schedule(control, clock)
+    flags = [f for f in _ticks(schedule, clock, 30) if f != (None, None)]  # 4 updates
+    assert flags == [(False, None)] * 4
+    assert schedule.solver_failures == 0 and schedule.relaxed_plans == 1
+    assert [p.relaxed for _, p in control.taken] == [False, True, False, False]
+    assert schedule.braking == "braking: test"
+
+
 def test_an_update_that_raises_is_a_solver_failure_and_keeps_the_old_plan() -> None:
     control, clock = FakeControl(), FakeClock()
     schedule = _schedule(control, clock)

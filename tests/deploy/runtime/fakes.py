@@ -14,9 +14,11 @@ from drivers.interfaces import MocapFrame, RobotMeasurement
 NAMES = ["r0", "r1"]
 
 
-def plan(success: bool = True, inside_margin: bool = False) -> SimpleNamespace:
+def plan(success: bool = True, inside_margin: bool = False, relaxed: bool = False
+         ) -> SimpleNamespace:
     """What the schedule reads of an ``MpcPlan``."""
-    return SimpleNamespace(success=success, start_inside_margin=inside_margin,
+    return SimpleNamespace(success=success, start_inside_margin=inside_margin, relaxed=relaxed,
+                           barrier_slack_m=0.05 if relaxed else 0.0,
                            wrench=np.zeros((len(NAMES), 6)), update_time_s=0.01)
 
 
@@ -38,6 +40,7 @@ class FakeControl:
     plans: list[object] = field(default_factory=list)  # what update returns, in turn
     decided: list[tuple[float, float]] = field(default_factory=list)  # (t, delay_s)
     raises: bool = False
+    taken: list[tuple[float, object]] = field(default_factory=list)  # plan_taken calls
 
     @property
     def controller(self) -> SimpleNamespace:
@@ -52,6 +55,11 @@ class FakeControl:
     def compensation_s(self, recent_delays_s: list[float]) -> float:
         recent = recent_delays_s[-10:]
         return float(np.median(recent)) if recent else 0.0
+
+    def plan_taken(self, t: float, plan: object) -> str | None:
+        """Starts braking on a relaxed plan (the real rule counts them: ``TeamController``)."""
+        self.taken.append((t, plan))
+        return "braking: test" if getattr(plan, "relaxed", False) else None
 
     def update(self, decision: NmpcDecision) -> object:
         if self.raises:

@@ -6,9 +6,12 @@ from __future__ import annotations
 import numpy as np
 import pytest
 
+from core.nmpc.mpc_plan import MpcPlan
+from core.nmpc.reference import BrakingReference
+from core.nmpc.settings import BrakingSettings, MpcSettings
 from deploy.config.scenario import load_scenario
 from deploy.runtime.codegen_cache import CompiledCodeCache
-from deploy.runtime.controller import SETTLE_S
+from deploy.runtime.controller import SETTLE_S, TeamController
 from deploy.runtime.sim_run import SimRun
 
 
@@ -41,12 +44,12 @@ def test_decision_holds_the_start_pose_while_settling_then_moves(run: SimRun) ->
     assert np.all(inputs.contacts == 1.0)  # every foot down
     assert not inputs.payload_reference[:, 3:6].any()  # the reference stands still
     assert inputs.obstacles.shape == (len(control.obstacles), 5)
-    walking = control.nmpc_inputs(SETTLE_S + 1.0, measurements, frame).inputs
+    walking = control.nmpc_inputs(SETTLE_S + 0.5, measurements, frame).inputs
     assert walking.payload_reference[:, 3:6].any()
     assert (walking.contacts == 0.0).any()  # the trot lifts feet over the horizon
     # without an active plan there is nothing to predict from: no compensation
-    delayed = control.nmpc_inputs(SETTLE_S + 1.0, measurements, frame, delay_s=0.03)
-    assert delayed.time_s == SETTLE_S + 1.0
+    delayed = control.nmpc_inputs(SETTLE_S + 0.5, measurements, frame, delay_s=0.03)
+    assert delayed.time_s == SETTLE_S + 0.5
     np.testing.assert_array_equal(delayed.inputs.robot_states, walking.robot_states)
 
 
@@ -69,3 +72,88 @@ def test_one_update_and_wbc_ticks_give_commands_within_the_limits(run: SimRun) -
         assert step.output.success and np.all(np.isfinite(step.command.torque_nm))
         assert np.all(step.stance == 1.0)  # settling: all feet in stance
         assert not step.command.kp.any() and step.command.kd.any()  # torque + damping only
+
+
+def _plan(relaxed: bool = False, success: bool = True, slack_m: float = 0.0) -> MpcPlan:
+    zeros = np.zeros
+    return MpcPlan(grf=zeros((2, 12)), wrench=zeros((2, 6)),
+                   robot_trajectories=zeros((2, 9, 12)), payload_trajectory=zeros((9, 12)),
+                   grf_trajectories=zeros((2, 8, 12)), wrench_trajectories=zeros((2, 8, 6)),
+                   solves=[], success=success, update_time_s=0.0, barrier_slack_m=slack_m,
+                   relaxed=relaxed)
+
+
+@pytest.fixture
+def control(run: SimRun) -> TeamController:
+    """A fresh controller (no NMPC of its own) reset on the simulation's standing team."""
+    control = TeamController(run.scenario, build_mpc=False)
+    control.reset(_read(run)[0], start_s=0.0)
+    return control
+
+
+def test_braking_starts_after_enough_infeasible_plans_in_a_row(control: TeamController,
+                                                               run: SimRun) -> None:
+    needed = control.settings.braking.after_flagged_updates
+    measurements, frame = _read(run)
+    control.nmpc_inputs(1.0, measurements, frame)  # a payload estimate to brake from
+    # a feasible plan in between restarts the count
+    for _ in range(needed - 1):
+        assert control.plan_taken(1.0, _plan(relaxed=True, slack_m=0.05)) is None
+    assert control.plan_taken(1.0, _plan()) is None
+    for _ in range(needed - 1):
+        assert control.plan_taken(1.1, _plan(success=False)) is None
+    assert control.braking_since_s is None
+    cause = control.plan_taken(1.2, _plan(relaxed=True, slack_m=0.05))
+    assert cause is not None and "braking" in cause and "0.050 m" in cause
+    assert control.braking_since_s == 1.2
+    assert isinstance(control.reference, BrakingReference)
+    # latched: later plans, feasible or not, change nothing
+    assert control.plan_taken(1.3, _plan()) is None
+    assert control.plan_taken(1.4, _plan(success=False)) is None
+    assert control.braking_since_s == 1.2
+    # the reference comes to rest within v^2 / 2a of the payload estimate, and holds
+    estimate = control.payload_estimate
+    assert estimate is not None
+    rest = control.reference.goal_m()
+    reach = np.linalg.norm(estimate[3:5]) ** 2 / (2 * control.settings.braking.deceleration_m_s2)
+    assert np.linalg.norm(rest - estimate[0:2]) <= reach + 1e-9
+    late = control.nmpc_inputs(20.0, measurements, frame).inputs
+    assert not late.payload_reference[:, 3:6].any()
+
+
+def test_braking_can_be_switched_off(run: SimRun) -> None:
+    control = TeamController(run.scenario, build_mpc=False,
+                             base_settings=MpcSettings(braking=BrakingSettings(enabled=False)))
+    for _ in range(10):
+        assert control.plan_taken(1.0, _plan(success=False)) is None
+    assert control.braking_since_s is None
+
+
+def test_reference_waits_for_a_team_that_lags_behind(control: TeamController,
+                                                     run: SimRun) -> None:
+    """The team stands still at the start: the reference runs ahead until it leads by
+    ``max_lag_m`` along the path, then its clock stops."""
+    max_lag_m = run.scenario.reference.max_lag_m
+    assert max_lag_m is not None
+    measurements, frame = _read(run)
+    period = control.settings.sample_period_s
+    times = np.arange(0.0, 6.0, period)
+    leads = []
+    for t in times:
+        control.nmpc_inputs(float(t), measurements, frame)
+        estimate = control.payload_estimate
+        assert estimate is not None
+        desired = control.reference.payload_state(control.reference_time(float(t)))
+        leads.append(desired[0] - estimate[0])
+    speed = run.scenario.reference.speed_m_s
+    assert max(leads) <= max_lag_m + speed * period + 1e-9
+    assert leads[-1] > max_lag_m - speed * period  # it held there, not further back
+    assert control.reference_held_s > 4.0
+    # a team that keeps up is never held: with the governor off the lead grows unbounded
+    free = TeamController(run.scenario.model_copy(update={"reference": run.scenario.reference
+                                                          .model_copy(update={"max_lag_m": None})}),
+                          build_mpc=False)
+    free.reset(measurements, start_s=0.0)
+    for t in times:
+        free.nmpc_inputs(float(t), measurements, frame)
+    assert free.reference_held_s == 0.0

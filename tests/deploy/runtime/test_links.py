@@ -58,6 +58,40 @@ def test_tracker_renames_bodies_ages_them_and_fits_a_velocity() -> None:
     assert tracker.poll() is frame
 
 
+def test_a_pose_repeated_bit_for_bit_freezes_the_body_while_jitter_does_not() -> None:
+    clock = FakeClock(0.0)
+    source = FakeMocap(clock)
+    tracker = MocapTracker(source, {"go2_0": "A", "go2_1": "B"}, 0.08, clock,
+                           max_repeated_frames=12)
+    rng = np.random.default_rng(0)
+    frozen_position = np.array([1.0, 2.0, 0.3])
+    ages = []
+    for k in range(60):  # 0.5 s at 120 Hz, frame numbers / timestamps rising
+        t = k / 120.0
+        jitter = np.array([0.5, 0.0, 0.3]) + rng.normal(0.0, 2e-4, 3)  # 0.2 mm sensor noise
+        source.push(MocapFrame(t, {"A": (frozen_position.copy(), IDENTITY.copy()),
+                                   "B": (jitter, IDENTITY.copy())}))
+        tracker.poll()
+        ages.append(tracker.age_s(["go2_0"]))
+        clock.sleep(1.0 / 120.0)
+        assert tracker.age_s(["go2_1"]) == pytest.approx(1.0 / 120.0)  # jitter: always fresh
+    # go2_0: seen on its first frame and 12 repeats, then no more: its age grows from there
+    assert ages[12] == pytest.approx(0.0) and tracker.repeated_frames["go2_0"] == 59
+    assert ages[-1] == pytest.approx(47 / 120.0)
+    assert tracker.age_s() == pytest.approx(48 / 120.0)  # the stalest body
+    # a pose that moves again is fresh at once
+    source.push(MocapFrame(0.5, {"A": (frozen_position + 1e-4, IDENTITY.copy()),
+                                 "B": (frozen_position, IDENTITY.copy())}))
+    tracker.poll()
+    assert tracker.age_s(["go2_0"]) == pytest.approx(0.0)
+    # without the check a frozen body stays fresh (the lockstep simulation's tracker)
+    plain = MocapTracker(source, {"go2_0": "A"}, 0.08, clock)
+    for k in range(30):
+        source.push(MocapFrame(1.0 + k, {"A": (frozen_position.copy(), IDENTITY.copy())}))
+        plain.poll()
+    assert plain.age_s() == pytest.approx(0.0)
+
+
 class FakeEstop:
     def __init__(self, allowed: bool) -> None:
         self.allowed = allowed

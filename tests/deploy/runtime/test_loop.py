@@ -9,6 +9,7 @@ from dataclasses import replace
 import numpy as np
 import pytest
 
+from core.nmpc.settings import BrakingSettings, MpcSettings
 from deploy.config.deploy_config import PostureConfig, RatesConfig
 from deploy.config.scenario import Scenario, load_scenario
 from deploy.nmpc_runtime.nmpc_lockstep import LockstepNmpc
@@ -178,3 +179,54 @@ def test_armed_without_a_first_plan_for_too_long_is_a_safe_stop() -> None:
     stopped_s = loop.since[loop.supervisor.state.SAFE_STOP]
     assert 0.1 < stopped_s - armed_s <= 0.1 + 0.004
     assert outcome["nmpc_failed_updates"] >= 2 and loop.nmpc.plan is None
+
+
+class _InfeasibleAfter(LockstepNmpc):
+    """The lockstep NMPC, whose plans from ``after_s`` on report relaxed safety constraints (as
+    a plan whose soft barriers used 5 cm of slack does)."""
+
+    after_s = 0.4
+
+    def take(self):  # type: ignore[no-untyped-def]
+        result = super().take()
+        if result is not None and result.plan is not None \
+                and result.decision.time_s >= self.after_s:
+            result.plan.barrier_slack_m = 0.05
+            result.plan.relaxed = True
+        return result
+
+
+def test_persistent_infeasible_plans_brake_then_sit_down_in_a_controlled_stop(
+        monkeypatch: pytest.MonkeyPatch) -> None:
+    import deploy.runtime.sim_run as sim_run_module
+
+    monkeypatch.setattr(sim_run_module, "LockstepNmpc", _InfeasibleAfter)
+    braking = BrakingSettings(after_flagged_updates=3, controlled_stop_s=0.5)
+    run = SimRun(_scenario(4.0), CompiledCodeCache(),
+                 base_settings=MpcSettings(braking=braking))
+    tapped = {name: Tapped(driver) for name, driver in run.links.drivers.items()}
+    run.links.drivers.update(tapped)
+    try:
+        summary = run.run(verbose=False)
+    finally:
+        run.close()
+    safety = summary["safety"]
+    assert safety["safe_stop"] is None and safety["final_state"] == "DONE"
+    assert safety["controlled_stop"] is True
+    # three relaxed plans at the 60 Hz instants from 0.4 s: braking on the third
+    braking_s = safety["braking_since_s"]
+    assert 0.4 + 2 / 60 - 1e-6 <= braking_s <= 0.4 + 3 / 60 + 0.003
+    sit = safety["transitions"][1]
+    assert "RUNNING -> SITTING_DOWN: controlled stop: braking since" in sit
+    sit_s = float(sit.split(" s ")[0])
+    assert sit_s == pytest.approx(braking_s + 0.5, abs=0.003)
+    assert safety["transitions"][2].split(" s ")[1].startswith("SITTING_DOWN -> DONE")
+    assert safety["result"].startswith("controlled stop")
+    # a controlled stop is no fall, and every command until DONE is the WBC's or the sit-down
+    # posture's (joint PD), never damping
+    assert summary["falls"] == 0
+    done_s = float(safety["transitions"][2].split(" s ")[0])
+    for driver in tapped.values():
+        during = [command for t, command in driver.sent if sit_s + 0.01 < t < done_s]
+        assert during and all(command.kp.any() for command in during)
+    assert summary["nmpc_plans_applied"] > 0

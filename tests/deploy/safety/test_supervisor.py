@@ -317,11 +317,11 @@ FAULTS = {  # name -> (inject into healthy inputs, text the cause must contain)
                      "base height: a1_1 base at 0.100 m, below 0.133 m (0.5 of nominal 0.266 m)"),
     "joint velocity": (_measurement_fault(GO2, "velocity_rad_s", 4, -35.0),
                        "joint velocity: go2_0 FR_thigh_joint at -35.00 rad/s (max 30.0 rad/s)"),
-    "joint above limit": (_measurement_fault(A1, "position_rad", 2, -0.85),
-                          "joint position limit: a1_1 FL_calf_joint at -0.850 rad, outside "
-                          "[-2.697, -0.916] rad (margin 0.0 rad)"),
-    "joint below limit": (_measurement_fault(GO2, "position_rad", 9, -1.1),
-                          "joint position limit: go2_0 RR_hip_joint at -1.100 rad"),
+    "joint above limit": (_measurement_fault(A1, "position_rad", 2, -0.80),
+                          "joint position limit: a1_1 FL_calf_joint at -0.800 rad, outside "
+                          "[-2.697, -0.916] rad (margin 0.1 rad)"),
+    "joint below limit": (_measurement_fault(GO2, "position_rad", 9, -1.2),
+                          "joint position limit: go2_0 RR_hip_joint at -1.200 rad"),
     "link lost": (_link_lost, "robot link lost: a1_1: a1 UDP 192.168.123.10:8007: last valid "
                               "state 0.050 s ago (timeout 0.02 s"),
     "measurement missing": (lambda i: dataclasses.replace(
@@ -595,3 +595,19 @@ def test_safe_stop_leaves_a_real_team_damped_and_at_rest(scene, limits):
         assert 0.03 < height_m < 0.5 * supervisor.limits[name].nominal_height_m
         assert tilt_rad(measurement.quaternion_wxyz) < SETTINGS.max_tilt_rad  # not toppled
         assert measurement.foot_contact.any()
+
+
+def test_a_controlled_stop_sits_down_with_its_cause_and_is_no_fault(limits, standing):
+    log: list[Transition] = []
+    supervisor, time_s = _supervisor_in(S.RUNNING, limits, standing, log=log)
+    cause = "controlled stop: braking since 3.000 s (braking: 3 infeasible NMPC plans in a row)"
+    supervisor.begin_sit_down(time_s, cause)
+    assert log[-1] == Transition(time_s, S.RUNNING, S.SITTING_DOWN, cause)
+    assert supervisor.fault == "" and supervisor.state == S.SITTING_DOWN
+    # the sit-down posture's commands pass; only a later fault damps
+    commands = {name: JointCommand(kp=np.full(12, 20.0), kd=np.full(12, 1.0),
+                                   position_rad=standing[name].position_rad)
+                for name in supervisor.limits}
+    assert supervisor.filter_commands(time_s, commands, standing) == commands
+    supervisor.finish(time_s + 2.0)
+    assert supervisor.state == S.DONE and supervisor.fault == ""

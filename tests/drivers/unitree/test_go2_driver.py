@@ -96,6 +96,9 @@ def test_driver_is_a_robot_driver(link):
     assert topic_name("", "lowcmd") == "rt/lowcmd"
     assert topic_name("go2_left", "lowstate") == "go2_left/rt/lowstate"
     assert '<NetworkInterface name="lo"/>' in cyclonedds_config("lo")
+    # a name is data: quotes and angle brackets cannot end the attribute or add elements
+    hostile = cyclonedds_config('eth0"/><Tracing verbosity="finest')
+    assert "<Tracing" not in hostile and hostile.count("<NetworkInterface ") == 1
 
 
 def test_state_round_trip(link):
