@@ -52,8 +52,11 @@ ROBOT_MODEL_SIZE = 1 + 6 + 3  # mass, inertia entries, coupling point in robot
 SELF = "self"
 # Upper bound on a swing foot's normal force [N] (see TransportProblem.decision_bounds).
 SWING_FORCE_BOUND_N = 1e-5
-# Decision block of the per-stage barrier slack (``SafetySettings.soft_barriers``).
+# Decision block of the per-stage barrier slack (``SafetySettings.soft_barriers``), in units
+# of SLACK_UNIT_M: a slack in millimetres keeps the dual of its bound (the exact penalty's price
+# per unit) near the other multipliers' scale, which HPIPM's fast mode needs to stay accurate.
 SLACK_BLOCK = "barrier_slack"
+SLACK_UNIT_M = 1e-3
 
 
 @dataclass
@@ -129,8 +132,8 @@ class TransportProblem:
         if not self.soft_barriers:
             return 0.0
         d = self.nlp.decision
-        return float(max(d.get(solution, f"{SLACK_BLOCK}@{k}")[0]
-                         for k in range(self.horizon_steps)))
+        return SLACK_UNIT_M * float(max(d.get(solution, f"{SLACK_BLOCK}@{k}")[0]
+                                        for k in range(self.horizon_steps)))
 
     def select_obstacles(self, inputs: MpcInputs, guess: np.ndarray | None = None,
                          agent: int | None = None) -> ObstacleSelection:
@@ -317,7 +320,8 @@ def build_transport_problem(
                     for o in range(slots)
                 ]
             rows = ca.vertcat(*barriers)
-            b.path(k, "barriers", rows + slack[k] if soft else rows, 0.0, np.inf)
+            b.path(k, "barriers", rows + SLACK_UNIT_M * slack[k] if soft else rows, 0.0,
+                   np.inf)
 
     # -- cost
     cost = settings.cost
@@ -336,7 +340,7 @@ def build_transport_problem(
             b.cost(cost.ground_reaction_force * ca.sumsqr(u_robot[key][k]))
         for j in range(na):
             b.cost(shared_cost_copies * _quadratic(wrench[j][k], r_wrench))
-    for sigma in slack:
+    for sigma in (SLACK_UNIT_M * s for s in slack):
         b.cost(safety.slack_penalty_linear * sigma
                + safety.slack_penalty_quadratic * sigma * sigma)
     if local:

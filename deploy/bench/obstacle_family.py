@@ -23,7 +23,7 @@ from deploy.config.scenario import Scenario
 from deploy.runtime.codegen_cache import CompiledCodeCache
 from deploy.runtime.sim_run import SimRun
 
-__all__ = ["family", "format_table", "outcome", "run_case", "write_json"]
+__all__ = ["family", "format_table", "outcome", "run_bench", "run_case", "write_json"]
 
 _COUPLING_IN_ROBOT_M = [0.0, 0.0, 0.1343]  # Go2
 _RINGS = {
@@ -141,3 +141,25 @@ def format_table(rows: list[dict]) -> str:
 
 def write_json(rows: list[dict], path: Path) -> None:
     path.write_text(json.dumps({"rows": rows}, indent=2) + "\n")
+
+
+def run_bench(names: list[str], baseline: bool, json_path: Path | None) -> int:
+    """``porter bench obstacles``: run the cases named (default all), print the table."""
+    cases = [case for case in family() if not names or case.name in names]
+    unknown = set(names) - {case.name for case in family()}
+    if unknown:
+        print(f"porter bench obstacles: unknown cases {sorted(unknown)}; known: "
+              f"{[case.name for case in family()]}")
+        return 2
+    print(f"porter bench obstacles: {len(cases)} cases"
+          + (" with the baseline (hard barriers, no braking, no governor)" if baseline else ""))
+    cache = CompiledCodeCache()
+    rows = []
+    for case in cases:
+        rows.append(run_case(case, cache, baseline=baseline))
+        print(f"  {case.name}: {rows[-1]['outcome']}", flush=True)
+    print(format_table(rows))
+    if json_path is not None:
+        write_json(rows, json_path)
+        print(f"wrote {json_path}")
+    return 0

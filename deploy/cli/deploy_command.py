@@ -43,7 +43,9 @@ from deploy.safety.preflight import PreflightReport, evaluate
 from deploy.safety.supervisor import SafetyState
 from deploy.safety.watchdog import Watchdog, WatchdogSpec
 from deploy.sim_backend.backend import SimBackend
+from deploy.sim_backend.porter_faults import PorterFaults
 from drivers.interfaces import RobotMeasurement
+from drivers.link_errors import LinkMonitor
 
 SWITCH_INTERVAL_S = 2e-4
 
@@ -87,7 +89,8 @@ def run_deploy(args: argparse.Namespace) -> int:
     control = TeamController(scenario, CompiledCodeCache(), tick_s=1.0 / config.rates.wbc_hz,
                              build_mpc=not in_process)
     # Built before the world starts: a cold cache compiles the NLPs for minutes.
-    runner = (NmpcProcess(scenario, control.settings, control.cache) if in_process else None)
+    process = (NmpcProcess(scenario, control.settings, control.cache) if in_process else None)
+    runner: NmpcRunner | None = process
     backend: SimBackend | None = None
     recorder: FlightRecorder | None = None
     links = None
@@ -104,8 +107,9 @@ def run_deploy(args: argparse.Namespace) -> int:
         if args.backend == "sim":
             backend = SimBackend(config, scenario)
             say("simulated world running (MuJoCo, fakes on loopback)")
-        clock, sleep = ((backend.clock, backend.clock.sleep) if backend is not None
-                        else (time.monotonic, time.sleep))
+        clock: Callable[[], float] = backend.clock if backend is not None else time.monotonic
+        sleep: Callable[[float], None] = (backend.clock.sleep if backend is not None
+                                          else time.sleep)
         if backend is not None:
             config = backend.config  # the links to the fakes, sim.safety_overrides applied
         links = open_links(config, clock)
@@ -121,8 +125,13 @@ def run_deploy(args: argparse.Namespace) -> int:
                 config.recorder, extra_attachments={DEPLOY_CONFIG_ATTACHMENT: yaml.safe_dump(
                     config.model_dump(mode="json"), sort_keys=False).encode()})
             say(f"recording to {path}")
-        if runner is not None:
-            runner.clock = clock
+        if process is not None:
+            process.clock = clock
+        if backend is not None and config.sim.faults:  # drills: faults of porter's own
+            faults = PorterFaults(config.sim.faults, clock)
+            runner = faults.runner(runner or NmpcThread(control, clock))
+            faults.recorder(recorder)
+            sleep = faults.sleep(sleep)
         loop = deploy_loop(config, control, links, recorder, OperatorPrompt(args.yes), stop,
                            duration_s, clock, sleep, runner, watchdog)
         with stop.installed():
@@ -224,6 +233,7 @@ def deploy_summary(loop: ControlLoop, args: argparse.Namespace,
     }
     if loop.recording is not None:
         summary["recorder_dropped"] = loop.recording.recorder.dropped
+    summary["rejected"] = rejected_messages(loop.links)
     summary["cpu_s"] = cpu_seconds()
     # per second of the loop's clock over RUNNING: simulated seconds under --backend sim
     if isinstance(loop.hooks, RunningCpu):
@@ -231,6 +241,16 @@ def deploy_summary(loop: ControlLoop, args: argparse.Namespace,
     if backend is not None:
         summary["sim_ground_truth"] = backend.ground_truth()
     return _plain(summary)
+
+
+def rejected_messages(links: TeamLinks) -> dict[str, dict[str, int]]:
+    """Messages each link refused, by reason (malformed, foreign, frozen, ...)."""
+    monitors = {name: getattr(driver, "link", None) for name, driver in links.drivers.items()}
+    rejected = {name: dict(link.rejected) for name, link in monitors.items()
+                if isinstance(link, LinkMonitor)}
+    if links.mocap is not None:
+        rejected["mocap"] = dict(links.mocap.counters.rejection_reasons)
+    return rejected
 
 
 def payload_progress(loop: ControlLoop) -> dict[str, Any]:

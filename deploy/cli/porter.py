@@ -89,28 +89,9 @@ def _bench_sim(args: argparse.Namespace) -> int:
 
 
 def _bench_obstacles(args: argparse.Namespace) -> int:
-    from deploy.bench.obstacle_family import family, format_table, run_case, write_json
-    from deploy.runtime.codegen_cache import CompiledCodeCache
+    from deploy.bench.obstacle_family import run_bench
 
-    cases = [case for case in family() if not args.cases or case.name in args.cases]
-    unknown = set(args.cases or []) - {case.name for case in family()}
-    if unknown:
-        print(f"porter bench obstacles: unknown cases {sorted(unknown)}; known: "
-              f"{[case.name for case in family()]}")
-        return 2
-    print(f"porter bench obstacles: {len(cases)} cases"
-          + (" with the baseline (hard barriers, no braking, no governor)"
-             if args.baseline else ""))
-    cache = CompiledCodeCache()
-    rows = []
-    for case in cases:
-        rows.append(run_case(case, cache, baseline=args.baseline))
-        print(f"  {case.name}: {rows[-1]['outcome']}", flush=True)
-    print(format_table(rows))
-    if args.json:
-        write_json(rows, Path(args.json))
-        print(f"wrote {args.json}")
-    return 0
+    return run_bench(args.cases, args.baseline, Path(args.json) if args.json else None)
 
 
 def _bench_recorder(args: argparse.Namespace) -> int:
@@ -190,6 +171,12 @@ def _deploy(args: argparse.Namespace) -> int:
     return run_deploy(args)
 
 
+def _drill(args: argparse.Namespace) -> int:
+    from deploy.cli.drill_command import run_drill
+
+    return run_drill(args)
+
+
 def _replay(args: argparse.Namespace) -> int:
     from deploy.cli.replay_command import run_replay
 
@@ -217,6 +204,15 @@ def _regress(args: argparse.Namespace) -> int:
 def build_parser() -> argparse.ArgumentParser:
     parser = argparse.ArgumentParser(prog="porter", description=__doc__)
     commands = parser.add_subparsers(dest="command", required=True)
+
+    drill = commands.add_parser("drill", help="the fault suite on the sim backend: every fault "
+                                "detected, only damping after detection, logs readable")
+    drill.add_argument("faults", nargs="*", help="run the faults whose names contain these "
+                       "(default: all)")
+    drill.add_argument("--keep", help="folder for each fault's config, log and output "
+                       "(default: a temporary one)")
+    drill.add_argument("--json", help="also write the rows as JSON {rows: [...]}")
+    drill.set_defaults(handler=_drill)
 
     bench = commands.add_parser("bench", help="benchmarks that print tables")
     bench_kinds = bench.add_subparsers(dest="bench", required=True)

@@ -128,25 +128,40 @@ class PreflightConfig(StrictModel):
     start_tolerance_m: float = Field(0.3, gt=0, le=2.0)  # payload this near the scenario's start
 
 
+ROBOT_FAULTS = ("robot_silent", "robot_frozen", "robot_garbage", "robot_nan", "robot_push")
+GO2_FAULTS = ("robot_frozen", "robot_garbage", "robot_nan")  # the Go2 fake's wire faults
+# Faults porter's own process injects into itself (``deploy.sim_backend.porter_faults``), at
+# ``at_s`` on the loop's clock; the others are the world's.
+PORTER_FAULTS = ("nmpc_failure", "recorder_failure", "loop_stall")
+
+
 class SimFault(StrictModel):
-    """A fault the simulated world injects ``at_s`` simulated seconds after it starts running
-    (tests and drills of the safety stop): ``estop_press`` (the CAN node's heartbeats say
+    """A fault injected ``at_s`` simulated seconds after the world starts running (tests and
+    drills of the safety stop). The world's: ``estop_press`` (the CAN node's heartbeats say
     "stopped"), ``heartbeat_loss`` (they stop), ``mocap_loss`` (NatNet frames stop),
     ``mocap_frozen`` (frames keep coming, frame numbers and timestamps rising, with the last
-    poses repeated exactly),
-    ``robot_silent`` (``robot``'s fake stops publishing its state), ``robot_frozen`` (a
-    Go2 ``robot``'s fake keeps publishing its last state, tick included)."""
+    poses repeated exactly), ``mocap_backwards`` (each frame's timestamp 1 ms before the
+    last), ``mocap_foreign`` (every frame is also sent from another host), ``natnet_malformed``
+    (a malformed packet beside every frame), ``robot_silent`` (``robot``'s fake stops
+    publishing its state), ``robot_frozen`` (a Go2 ``robot``'s fake keeps publishing its last
+    state, tick included), ``robot_garbage`` (it publishes bytes that are no ``LowState_``),
+    ``robot_nan`` (a joint angle of its state is NaN), ``robot_push`` (a 300 N sideways push on
+    ``robot``'s trunk for 0.4 s). Porter's own (``PORTER_FAULTS``): ``nmpc_failure`` (every NMPC
+    plan from then on is a failed solve), ``recorder_failure`` (every log write fails with
+    ENOSPC), ``loop_stall`` (the loop's thread hangs 0.3 s once)."""
 
     at_s: float = Field(ge=0)
     kind: Literal["estop_press", "heartbeat_loss", "mocap_loss", "mocap_frozen",
-                  "robot_silent", "robot_frozen"]
+                  "mocap_backwards", "mocap_foreign", "natnet_malformed",
+                  "robot_silent", "robot_frozen", "robot_garbage", "robot_nan", "robot_push",
+                  "nmpc_failure", "recorder_failure", "loop_stall"]
     robot: str | None = None
 
     @model_validator(mode="after")
     def _robot_iff_robot_fault(self) -> SimFault:
-        if (self.kind in ("robot_silent", "robot_frozen")) != (self.robot is not None):
-            raise ValueError("robot: name the robot for robot_silent and robot_frozen, and "
-                             "only for them")
+        if (self.kind in ROBOT_FAULTS) != (self.robot is not None):
+            raise ValueError(f"robot: name the robot for {', '.join(ROBOT_FAULTS)}, and only "
+                             "for them")
         return self
 
 
@@ -318,8 +333,8 @@ def load_deploy_config(path_or_name: Path | str) -> tuple[DeployConfig, Scenario
         if unknown:
             raise ConfigError(f"{path}: {field_name}: unknown {unknown}; known {known}")
     for fault in config.sim.faults:
-        if fault.kind == "robot_frozen" and not isinstance(config.robots[str(fault.robot)],
-                                                           Go2Link):
-            raise ConfigError(f"{path}: sim.faults: robot_frozen needs a Go2 (its tick "
-                              f"counter), {fault.robot} is not one")
+        if fault.kind in GO2_FAULTS and not isinstance(config.robots[str(fault.robot)],
+                                                       Go2Link):
+            raise ConfigError(f"{path}: sim.faults: {fault.kind} needs a Go2 (its fake), "
+                              f"{fault.robot} is not one")
     return config, scenario

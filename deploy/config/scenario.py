@@ -159,9 +159,6 @@ class Scenario(StrictModel):
     duration_s: float = Field(gt=0)
     seed: int = Field(0, ge=0)
     goal_tolerance_m: float = Field(0.15, gt=0)
-    # How the run is meant to end, checked by the tests of the shipped scenarios: at the goal,
-    # or (a case no plan can pass safely) braking to a controlled stop without a fall.
-    expected_outcome: Literal["goal", "controlled stop"] = "goal"
 
     @field_validator("team")
     @classmethod

@@ -19,7 +19,7 @@ import time
 from collections import deque
 from collections.abc import Callable, Iterable
 from pathlib import Path
-from typing import Any
+from typing import Any, Literal
 
 from mcap.writer import CompressionType, Writer
 from mcap_protobuf.schema import register_schema
@@ -43,6 +43,10 @@ class RecorderSettings(StrictModel):
         60, ge=1, description="NMPC updates between controller warm-start keyframes")
     poll_interval_s: float = Field(0.01, gt=0.0, description="the writer drains the queue this "
                                    "often (batches: one wake-up per interval, not per message)")
+    on_failure: Literal["safe_stop", "warn"] = Field(
+        "safe_stop", description="when the writer fails (disk full, write error, its thread "
+        "gone): stop the team (a run that cannot be recorded cannot be audited) or go on "
+        "unrecorded with a warning")
 
 
 class FlightRecorder:
@@ -96,6 +100,15 @@ class FlightRecorder:
         return True
 
     @property
+    def failure(self) -> str | None:
+        """Why the writer stopped writing (its exception, or its thread gone), else None."""
+        if self.error is not None:
+            return repr(self.error)
+        if not self._closed and not self._thread.is_alive():
+            return "the writer thread died"
+        return None
+
+    @property
     def pending(self) -> int:
         """Messages queued and not yet written."""
         return len(self._queue)
@@ -123,8 +136,13 @@ class FlightRecorder:
                 "messages_written": str(self.written), "messages_dropped": str(self.dropped),
                 "writer_error": repr(self.error) if self.error else ""})
             self._writer.finish()
+        except OSError as error:  # disk full at the end: the file ends at its last good chunk
+            self.error = self.error or error
         finally:
-            self._stream.close()
+            try:
+                self._stream.close()
+            except OSError as error:  # the close's own flush failed the same way
+                self.error = self.error or error
 
     def __enter__(self) -> FlightRecorder:
         return self

@@ -59,6 +59,7 @@ class LoopRecording:
         self.pair_names = [f"{body}|obstacle_{j}" for body in [PAYLOAD_NAME, *robot_names]
                            for j in range(len(obstacles))]
         self.deadline_misses = 0
+        self._writer_failed = False
         self._wbc_times: list[float] = []
         self._topics = {name: {kind: fmt.robot_topic(name, kind)
                                for kind in ("state", "command", "wbc", "wrench")}
@@ -74,6 +75,17 @@ class LoopRecording:
 
     def error(self, time_s: float, text: str) -> None:
         self.event(time_s, text, pb.Event.ERROR)
+
+    def writer_failure(self, time_s: float) -> str | None:
+        """Once, when the recorder's writer has failed: the cause (also as an ERROR event,
+        which reaches the file only if the writer can still write); else None."""
+        if self._writer_failed:
+            return None
+        failure = self.recorder.failure
+        if failure is not None:
+            self._writer_failed = True
+            self.error(time_s, f"flight recorder failed: {failure}")
+        return failure
 
     def warning(self, time_s: float, text: str) -> None:
         self.event(time_s, text, pb.Event.WARNING)

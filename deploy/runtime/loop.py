@@ -33,21 +33,21 @@ from __future__ import annotations
 
 import sys
 from collections.abc import Callable
-from dataclasses import dataclass, replace
-from typing import Literal, Protocol, TextIO
+from dataclasses import replace
+from typing import Literal, TextIO
 
 import numpy as np
 
 from core.estimation.base_velocity import BaseVelocityEstimator
 from core.model.conventions import PAYLOAD_NAME
-from deploy.config.deploy_config import PostureConfig, RatesConfig
 from deploy.nmpc_runtime.nmpc_schedule import NmpcSchedule
 from deploy.recording.loop_recording import LoopRecording
 from deploy.runtime.clock import LoopClock
 from deploy.runtime.controller import TeamController, WbcStep
 from deploy.runtime.links import TeamLinks
+from deploy.runtime.loop_interfaces import Heartbeat, LoopHooks, LoopSettings
 from deploy.runtime.timing import PeriodStats, TickStages
-from deploy.safety.checks import SupervisorSettings, clip_torque, robot_limits
+from deploy.safety.checks import clip_torque, robot_limits
 from deploy.safety.posture import PostureMove, sitting_posture, standing_posture
 from deploy.safety.preflight import PreflightReport
 from deploy.safety.supervisor import SafetyInputs, SafetyState, SafetySupervisor, Transition
@@ -60,32 +60,6 @@ SATURATION_MARGIN = 0.25  # commands up to 25 % past a torque limit are clipped 
 Confirm = Callable[[], bool | None]  # None while the operator has not answered
 Preflight = Callable[[dict[str, RobotMeasurement], dict[str, str]], PreflightReport]
 S = SafetyState
-
-
-@dataclass(frozen=True)
-class LoopSettings:
-    """The loop's rates, fault thresholds and postures (``porter deploy``: from its config)."""
-
-    rates: RatesConfig
-    safety: SupervisorSettings
-    posture: PostureConfig
-    preflight_timeout_s: float = 5.0
-
-
-class Heartbeat(Protocol):
-    """The watchdog outside this process (``deploy.safety.watchdog``)."""
-
-    def beat(self) -> None: ...
-    @property
-    def tripped(self) -> bool: ...
-    def disarm(self) -> None: ...
-
-
-class LoopHooks(Protocol):
-    """What a simulation measures in the loop (``deploy.runtime.sim_run``)."""
-
-    def before_tick(self, t: float) -> None: ...
-    def wbc_stepped(self, steps: list[WbcStep]) -> None: ...
 
 
 class ControlLoop:
@@ -127,6 +101,7 @@ class ControlLoop:
         self.stopped_early = False
         self._overruns_seen = 0  # the clock's overrun count at the last tick
         self.controlled_stop = False  # the braking backup ended the run with a sit-down
+        self.recorder_failure: str | None = None
         self._braking_said = False
 
     def now(self) -> float:
@@ -146,6 +121,7 @@ class ControlLoop:
             "nmpc_relaxed_plans": nmpc.relaxed_plans,
             "braking_since_s": self.control.braking_since_s,
             "controlled_stop": self.controlled_stop,
+            "recorder_failure": self.recorder_failure,
             "torque_saturations": dict(self.saturations),
             "wbc_failed_ticks": supervisor.wbc_failures.failed_ticks,
         }
@@ -229,6 +205,9 @@ class ControlLoop:
         stages.mark("send")
         if self.recording is not None:
             self.recording.team_tick(t, self.names, measurements, sent, steps)
+            failure = self.recording.writer_failure(t)
+            if failure is not None:
+                self._recorder_failed(t, failure)
         stages.mark("record")
         running = self.supervisor.state == S.RUNNING
         if running:
@@ -386,6 +365,14 @@ class ControlLoop:
         elif state == S.DONE:
             return elapsed >= posture.final_damping_s
         return False
+
+    def _recorder_failed(self, t: float, failure: str) -> None:
+        """The flight recorder stopped writing: a safe stop, or a warning, by its settings."""
+        self.recorder_failure = failure
+        self.say(f"[{t:7.3f} s] ERROR: flight recorder failed: {failure}")
+        if self.recording is not None \
+                and self.recording.recorder.settings.on_failure == "safe_stop":
+            self.supervisor.trigger_safe_stop(t, f"flight recorder failed: {failure}")
 
     def _sit_down(self, t: float, measurements: dict[str, RobotMeasurement], why: str) -> None:
         self.ended_by = why

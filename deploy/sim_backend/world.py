@@ -43,7 +43,7 @@ import can
 import numpy as np
 
 from core.model.conventions import JOINT_COUNT, PAYLOAD_NAME
-from deploy.config.deploy_config import DeployConfig, Go2Link
+from deploy.config.deploy_config import PORTER_FAULTS, DeployConfig, Go2Link
 from deploy.config.scenario import Scenario
 from deploy.runtime.process_names import name_this_process
 from deploy.safety.checks import tilt_rad
@@ -84,6 +84,8 @@ class CommandsAfterFault:
     commands: int = 0
     non_damping: int = 0
     last_non_damping_s: float | None = None
+    first_damping_s: float | None = None  # the first damping-only command (kd > 0)
+    non_damping_after_damping: int = 0  # the drill's "not damping after detection"
 
 
 @dataclass(frozen=True)
@@ -179,6 +181,7 @@ class SimWorld:
         self.steps = 0
         self.silent = set(config.sim.silent_robots)
         self.mocap_stopped = False
+        self.network_faults: set[str] = set()  # sent beside every MoCap frame
         self.pending_faults = sorted(config.sim.faults, key=lambda fault: fault.at_s)
         self.faults_applied: list[dict[str, Any]] = []
         self.after_fault = {name: CommandsAfterFault() for name in self.robot_types}
@@ -196,12 +199,32 @@ class SimWorld:
                 self.natnet.frozen = True
             elif fault.kind == "robot_silent" and fault.robot is not None:
                 self.silent.add(fault.robot)
-            elif fault.kind == "robot_frozen" and fault.robot is not None:
+            elif fault.kind == "mocap_backwards":
+                self.natnet.rewind = True
+            elif fault.kind in ("mocap_foreign", "natnet_malformed"):
+                self.network_faults.add(fault.kind)
+            elif fault.kind == "robot_push" and fault.robot is not None:
+                self.simulation.apply_push(fault.robot, np.array([0.0, 300.0, 0.0]), 0.4)
+            elif fault.kind in ("robot_frozen", "robot_garbage", "robot_nan") \
+                    and fault.robot is not None:
                 fake = self.fakes[fault.robot]
                 if isinstance(fake, FakeGo2):  # load_deploy_config allows no other
-                    fake.frozen = True
+                    if fault.kind == "robot_frozen":
+                        fake.frozen = True
+                    else:
+                        fake.corrupt = fault.kind.removeprefix("robot_")
+            elif fault.kind in PORTER_FAULTS:
+                pass  # porter injects it itself (deploy.sim_backend.porter_faults); counted
             self.faults_applied.append({"kind": fault.kind, "robot": fault.robot,
                                         "time_s": self.simulation.time_s})
+
+    def _network_faults(self) -> None:
+        """Beside a frame: the same frame from another host, and a packet that is no NatNet
+        message (a truncated frame header)."""
+        if "mocap_foreign" in self.network_faults and self.natnet.last_packet is not None:
+            self.natnet.send_foreign(self.natnet.last_packet)
+        if "natnet_malformed" in self.network_faults:
+            self.natnet.send_packet(b"\x07\x00\xff\x7f" + bytes(9))
 
     def _received(self, name: str, command: JointCommand | None) -> None:
         """Once a fault is in: count what reaches the motors; damping = no stiffness, no
@@ -210,9 +233,13 @@ class SimWorld:
             return
         counts = self.after_fault[name]
         counts.commands += 1
+        since_s = self.simulation.time_s - self.faults_applied[0]["time_s"]
         if np.any(command.kp != 0.0) or np.any(command.torque_nm != 0.0):
             counts.non_damping += 1
-            counts.last_non_damping_s = self.simulation.time_s - self.faults_applied[0]["time_s"]
+            counts.last_non_damping_s = since_s
+            counts.non_damping_after_damping += int(counts.first_damping_s is not None)
+        elif counts.first_damping_s is None and np.any(command.kd > 0.0):
+            counts.first_damping_s = since_s
 
     def endpoints(self) -> dict[str, Any]:
         """Where the fakes listen: NatNet command port, each A1's UDP (address, port)."""
@@ -287,6 +314,7 @@ class SimWorld:
             if sim.time_s >= next_mocap_s:
                 if not self.mocap_stopped:
                     self.natnet.publish_frame()
+                    self._network_faults()
                 next_mocap_s += mocap_period_s * max(1, math.ceil((sim.time_s - next_mocap_s)
                                                                   / mocap_period_s))
             if self.can_node is not None and sim.time_s >= next_ft_s:

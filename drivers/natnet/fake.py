@@ -96,8 +96,12 @@ class FakeNatNetServer:
         self.connects = self.keepalives_received = self.model_requests = 0
         self.frames_published = self.frames_dropped = 0
         self._frame_number = 0
-        # fault injection: frames keep coming (numbers, timestamps rising) with the last poses
+        # fault injection: frames keep coming (numbers, timestamps rising) with the last poses;
+        # ``rewind``: each frame's timestamp 1 ms before the previous one
         self.frozen = False
+        self.rewind = False
+        self.last_packet: bytes | None = None  # the newest frame packet
+        self._last_timestamp_s = 0.0
         self._last_bodies: list[RigidBodySample] = []
         self._command_socket = socket.socket(socket.AF_INET, socket.SOCK_DGRAM)
         self._command_socket.bind((host, command_port))
@@ -143,6 +147,9 @@ class FakeNatNetServer:
             self.frames_dropped += 1
             return False
         timestamp_s = float(self._timestamp_source())
+        if self.rewind:
+            timestamp_s = self._last_timestamp_s - 0.001
+        self._last_timestamp_s = timestamp_s
         ticks = int(self._clock() * _TICKS_PER_S)
         bodies = []
         with self._lock:
@@ -165,6 +172,7 @@ class FakeNatNetServer:
             self._frame_number, tuple(bodies), timestamp_s, camera_mid_exposure_ticks=ticks,
             data_received_ticks=ticks, transmit_ticks=ticks, params=params))
         self.frames_published += 1
+        self.last_packet = packet
         if self.latency_s > 0.0:
             with self._pending_ready:
                 self._pending.append((self._clock() + self.latency_s, packet))
@@ -172,6 +180,14 @@ class FakeNatNetServer:
         else:
             self.send_packet(packet)
         return True
+
+    def send_foreign(self, packet: bytes, source_host: str = "127.0.0.2") -> None:
+        """Send ``packet`` to the data destinations from another host (fault injection: a
+        second NatNet server or a spoofer on the network; on loopback any 127.x address)."""
+        with socket.socket(socket.AF_INET, socket.SOCK_DGRAM) as foreign:
+            foreign.bind((source_host, 0))
+            for destination in self._destinations():
+                foreign.sendto(packet, destination)
 
     def send_packet(self, packet: bytes) -> None:
         """Send raw bytes to the data destinations now (fault injection: malformed packets)."""

@@ -245,6 +245,10 @@ class LowStateCodec:
         self._foot = [self.wire.view(self._buffer, p, 4) for p in ("foot_force", "foot_force_est")]
         self._tick = self.wire.view(self._buffer, "tick", 4)
 
+    def encode_header(self) -> bytes:
+        """The 4-byte CDR encapsulation header every sample starts with."""
+        return bytes(self._buffer[:4])
+
     def encode(self, state: WireState, motor_mode: int = MOTOR_MODE_SERVO) -> bytes:
         """The wire bytes of a robot's ``state`` (CRC 0, as porter's fakes publish it)."""
         for name, view in self._views.items():

@@ -16,6 +16,7 @@ real-time use; the caller keeps the simulation safe from concurrent access.
 from __future__ import annotations
 
 from collections import Counter
+from dataclasses import replace
 
 from cyclonedds.core import ReadCondition, SampleState, ViewState, WaitSet
 from cyclonedds.pub import DataWriter
@@ -83,6 +84,9 @@ class FakeGo2(RealTimeFake):
         self.commands_rejected: Counter[str] = Counter()
         self.states_published = 0
         self.frozen = False  # True: republish the last state unchanged (see publish_state)
+        # fault injection: "garbage" publishes bytes that are no LowState_, "nan" a state with
+        # a joint angle that is not a number (see publish_state)
+        self.corrupt: str | None = None
         self._tick_ms = -1
         self._last_state_bytes: bytes | None = None
         self.last_command: JointCommand | None = None
@@ -107,7 +111,18 @@ class FakeGo2(RealTimeFake):
             write_raw(self._state_writer, self._last_state_bytes)
             self.states_published += 1
             return
+        if self.corrupt == "garbage":
+            # DDS itself refuses a sample of the wrong size, so: a LowState_'s size and CDR
+            # header with every byte after it 0xFF (every float NaN, the tick 2^32 - 1)
+            size = self._states.size
+            write_raw(self._state_writer, self._states.encode_header() + b"\xff" * (size - 4))
+            self.states_published += 1
+            return
         measurement = self.driver.read()
+        if self.corrupt == "nan":
+            position = measurement.position_rad.copy()
+            position[4] = float("nan")
+            measurement = replace(measurement, position_rad=position)
         self._tick_ms = max(round(measurement.time_s * 1000.0), self._tick_ms + 1)
         wire = wire_state_from_measurement(measurement, self.foot_force_n_per_count,
                                            tick_ms=self._tick_ms)

@@ -254,3 +254,50 @@ def test_default_log_names_are_unique_and_stay_in_their_folder(tmp_path: Path) -
     path = default_log_path(escaping, tmp_path / "runs", prefix="deploy-")
     assert path.parent == tmp_path / "runs" and path.name.startswith("deploy-_.._etc_passwd-")
     assert safe_file_stem("..") == "run" and safe_file_stem("a b/c") == "a_b_c"
+
+
+class _DiskFull:
+    """Wraps a recorder's ``_write``: after ``after`` messages every write fails (ENOSPC)."""
+
+    def __init__(self, write, after: int) -> None:  # type: ignore[no-untyped-def]
+        self.write, self.after, self.calls = write, after, 0
+
+    def __call__(self, *args) -> None:  # type: ignore[no-untyped-def]
+        self.calls += 1
+        if self.calls > self.after:
+            raise OSError(28, "No space left on device")
+        self.write(*args)
+
+
+@pytest.mark.parametrize("policy", ["safe_stop", "warn"])
+def test_a_failing_writer_reaches_the_loop_and_the_log_keeps_its_flushed_part(
+        tmp_path: Path, policy: str) -> None:
+    scenario = load_scenario("two_go2")
+    scenario = scenario.model_copy(update={"duration_s": 1.0, "controller": (
+        scenario.controller.model_copy(update={"executor": "serial"}))})
+    path = tmp_path / "run.mcap"
+    loop = SimRun(scenario, CompiledCodeCache())
+    recorder = open_run_recorder(path, scenario, loop.settings, loop.wbc_settings, "mujoco",
+                                 RecorderSettings(flush_interval_s=0.05, on_failure=policy))
+    recorder._write = _DiskFull(recorder._write, after=3000)  # type: ignore[method-assign]
+    loop.attach_recorder(recorder)
+    try:
+        summary = loop.run(verbose=False)
+    finally:
+        loop.close()
+        recorder.close(summary)
+    safety = summary["safety"]
+    assert "No space left on device" in safety["recorder_failure"]
+    if policy == "safe_stop":
+        assert safety["safe_stop"].startswith("flight recorder failed: OSError(28")
+        trip_s = float(safety["transitions"][1].split(" s ")[0])
+        assert trip_s < 1.0  # before the run's end
+    else:
+        assert safety["safe_stop"] is None and safety["result"] == "ran 1 s"
+    assert "No space left on device" in (recorder.failure or "")
+    # what was flushed before the failure reads back, CRCs checked
+    recovered = recover(path, tmp_path / "recovered.mcap")
+    assert recovered.messages > 1000
+    log = LogFile(tmp_path / "recovered.mcap")
+    counts, _, _ = log.message_counts()
+    assert counts.get("/robot/go2_0/state", 0) > 100

@@ -1,0 +1,106 @@
+"""The drill's faults: what each injects and how the team must end.
+
+Expected outcomes: ``safe stop`` (exit 3, SAFE_STOP with ``cause`` in its reason, and from the
+first damping-only command on nothing but damping reaches any motor), ``sit down`` (a stop
+request: exit 130, the team sits down, no safe stop), ``ignored`` (the run completes, exit 0,
+and the link counted what it refused: ``rejected``), ``refused`` (a bad config or command
+line: exit 2 naming ``cause`` before anything starts), ``not started`` (the pre-flight check
+names ``cause`` and the robots never stand up: exit 1). Times are simulated seconds after the
+world starts (the team is RUNNING from about 1.5 s with the drill's short stand-up).
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass, field
+from typing import Any, Literal
+
+__all__ = ["AT_S", "DrillFault", "catalogue"]
+
+AT_S = 2.5  # simulated s after the world starts: RUNNING by then
+Expect = Literal["safe stop", "sit down", "ignored", "refused", "not started"]
+Action = Literal["none", "sigterm", "sigint", "kill_nmpc"]
+
+
+@dataclass(frozen=True)
+class DrillFault:
+    """One drill case: ``config`` is merged into the drill's deploy config (section by
+    section), ``args`` replace command-line options, ``action`` is done from outside at
+    ``AT_S``; ``cause`` must appear in the safe-stop reason (or, refused, in the error)."""
+
+    name: str
+    expect: Expect
+    cause: str
+    config: dict[str, Any] = field(default_factory=dict)
+    args: tuple[str, ...] = ()
+    action: Action = "none"
+    rejected: str = ""  # ignored: the link that must have counted refusals ("mocap", a robot)
+
+
+def _sim(kind: str, robot: str | None = None, at_s: float = AT_S) -> dict[str, Any]:
+    fault: dict[str, Any] = {"at_s": at_s, "kind": kind}
+    if robot is not None:
+        fault["robot"] = robot
+    return {"sim": {"faults": [fault]}}
+
+
+def catalogue() -> list[DrillFault]:
+    """Every fault of the drill, in table order."""
+    stop: Expect = "safe stop"
+    return [
+        DrillFault("e-stop pressed", stop, "e-stop: run not allowed", _sim("estop_press")),
+        DrillFault("e-stop pressed while standing up", stop, "e-stop",
+                   _sim("estop_press", at_s=0.6)),
+        DrillFault("e-stop heartbeat lost", stop, "e-stop", _sim("heartbeat_loss")),
+        DrillFault("MoCap lost", stop, "MoCap lost", _sim("mocap_loss")),
+        DrillFault("MoCap frozen (frames rise, poses repeat)", stop, "MoCap lost",
+                   _sim("mocap_frozen")),
+        DrillFault("MoCap timestamps backwards", stop, "MoCap lost",
+                   _sim("mocap_backwards")),
+        DrillFault("NatNet frames from a foreign host", "ignored", "", _sim("mocap_foreign"),
+                   rejected="mocap"),
+        DrillFault("NatNet malformed packets", "ignored", "", _sim("natnet_malformed"),
+                   rejected="mocap"),
+        DrillFault("robot go2_0 silent", stop, "robot link lost: go2_0",
+                   _sim("robot_silent", "go2_0")),
+        DrillFault("robot go2_1 silent", stop, "robot link lost: go2_1",
+                   _sim("robot_silent", "go2_1")),
+        DrillFault("robot go2_0 frozen (tick stops)", stop, "frozen tick",
+                   _sim("robot_frozen", "go2_0")),
+        DrillFault("robot go2_1 frozen (tick stops)", stop, "frozen tick",
+                   _sim("robot_frozen", "go2_1")),
+        DrillFault("robot go2_0 malformed LowState", stop, "robot link lost: go2_0",
+                   _sim("robot_garbage", "go2_0")),
+        DrillFault("robot go2_1 NaN joint angle", stop, "go2_1", _sim("robot_nan", "go2_1")),
+        DrillFault("robot go2_0 pushed over (fall)", stop, "go2_0",
+                   _sim("robot_push", "go2_0")),
+        DrillFault("NMPC solver failure streak", stop, "NMPC solver failed",
+                   _sim("nmpc_failure")),
+        DrillFault("NMPC process killed", stop, "NMPC", action="kill_nmpc"),
+        DrillFault("flight recorder: disk full", stop, "flight recorder failed",
+                   _sim("recorder_failure")),
+        DrillFault("control loop stalls 0.3 s (watchdog)", stop, "watchdog took over",
+                   _sim("loop_stall")),
+        DrillFault("SIGTERM", "sit down", "", action="sigterm"),
+        DrillFault("SIGINT (Ctrl-C)", "sit down", "", action="sigint"),
+        DrillFault("robot silent from the start (pre-flight)", "not started", "go2_1",
+                   {"sim": {"silent_robots": ["go2_1"]}}),
+        DrillFault("config: NaN timeout", "refused", "mocap_timeout_s",
+                   {"safety": {"mocap_timeout_s": float("nan")}}),
+        DrillFault("config: infinite link timeout", "refused", "link_timeout_s",
+                   {"robots": {"go2_0": {"link_timeout_s": float("inf")}}}),
+        DrillFault("config: damping_kd 0", "refused", "damping_kd",
+                   {"safety": {"damping_kd": 0.0}}),
+        DrillFault("config: max_tilt_rad 100", "refused", "max_tilt_rad",
+                   {"safety": {"max_tilt_rad": 100.0}}),
+        DrillFault("config: 1e9 solver failures allowed", "refused",
+                   "max_consecutive_solver_failures",
+                   {"safety": {"max_consecutive_solver_failures": 1_000_000_000}}),
+        DrillFault("config: port out of range", "refused", "command_port",
+                   {"mocap": {"command_port": 70000}}),
+        DrillFault("config: unknown network interface", "refused", "network_interface",
+                   {"network_interface": "enp9s9-absent"}),
+        DrillFault("config: unknown field", "refused", "Extra inputs are not permitted",
+                   {"safety": {"max_tilt_deg": 40}}),
+        DrillFault("command line: --duration -1", "refused", "--duration",
+                   args=("--duration", "-1")),
+    ]

@@ -1,0 +1,228 @@
+"""Run one drill fault as its own ``porter deploy --backend sim`` and judge it from outside.
+
+Each fault gets a copy of the shipped ``two_go2`` deploy config with a short stand-up
+(``STAND_UP``), the fault's changes merged in, and a run of ``DURATION_S``. The verdict reads:
+the exit code; the summary (stdout JSON); the simulator's truth in it (per robot: the first
+damping-only command after the fault, and every command that was not damping after that);
+the flight log read back (``LogFile``; a log without its summary is recovered chunk by chunk).
+"""
+
+from __future__ import annotations
+
+import json
+import math
+import os
+import re
+import signal
+import subprocess
+import sys
+import threading
+import time
+from dataclasses import dataclass
+from pathlib import Path
+from typing import Any
+
+import yaml
+
+from deploy.config.deploy_config import CONFIG_DIR
+from deploy.drill.catalogue import AT_S, DrillFault
+from deploy.recording.log_reader import LogError, LogFile, recover
+
+__all__ = ["DURATION_S", "DrillRow", "format_table", "run_fault"]
+
+DURATION_S = 2.0  # RUNNING seconds
+STAND_UP = {"posture": {"stand_up_s": 1.0, "settle_s": 0.2}}
+_RUNNING = re.compile(r"-> RUNNING")
+
+
+@dataclass
+class DrillRow:
+    fault: str
+    expect: str
+    passed: bool
+    detected_after_ms: float | None
+    final_state: str
+    non_damping_after_detection: int | None
+    log: str
+    exit_code: int
+    detail: str
+
+
+def _merge(base: dict[str, Any], changes: dict[str, Any]) -> dict[str, Any]:
+    merged = dict(base)
+    for key, value in changes.items():
+        merged[key] = (_merge(merged[key], value) if isinstance(value, dict)
+                       and isinstance(merged.get(key), dict) else value)
+    return merged
+
+
+def _config(fault: DrillFault, folder: Path) -> Path:
+    data = yaml.safe_load((CONFIG_DIR / "two_go2.yaml").read_text())
+    data = _merge(_merge(data, STAND_UP), fault.config)
+    path = folder / "deploy.yaml"
+    path.write_text(yaml.safe_dump(data))
+    return path
+
+
+def _children_named(pid: int, comm: str) -> list[int]:
+    """Descendants of ``pid`` whose process name is ``comm`` (from /proc)."""
+    parents: dict[int, int] = {}
+    names: dict[int, str] = {}
+    for entry in Path("/proc").iterdir():
+        if entry.name.isdigit():
+            try:
+                stat = (entry / "stat").read_text()
+            except OSError:
+                continue
+            name = stat[stat.index("(") + 1: stat.rindex(")")]
+            parents[int(entry.name)] = int(stat[stat.rindex(")") + 2:].split()[1])
+            names[int(entry.name)] = name
+    found = []
+    for child, name in names.items():
+        ancestor = parents.get(child)
+        while ancestor is not None and ancestor not in (0, 1, pid):
+            ancestor = parents.get(ancestor)
+        if ancestor == pid and name == comm:
+            found.append(child)
+    return found
+
+
+def _act(process: subprocess.Popen, fault: DrillFault, running: threading.Event,
+         time_scale: float) -> None:
+    """Once RUNNING is announced, wait until about ``AT_S`` and do the fault's action."""
+    if not running.wait(120.0):
+        return
+    time.sleep(max(AT_S - 1.5, 0.2) / time_scale)
+    if fault.action == "sigterm":
+        process.send_signal(signal.SIGTERM)
+    elif fault.action == "sigint":
+        process.send_signal(signal.SIGINT)
+    elif fault.action == "kill_nmpc":
+        for pid in _children_named(process.pid, "porter-nmpc"):
+            os.kill(pid, signal.SIGKILL)
+
+
+def run_fault(fault: DrillFault, folder: Path, timeout_s: float = 300.0) -> DrillRow:
+    """Run ``fault`` in ``folder`` (its config, log and output land there)."""
+    folder.mkdir(parents=True, exist_ok=True)
+    config = _config(fault, folder)
+    log_path = folder / "run.mcap"
+    args = ["--duration", f"{DURATION_S:g}", *fault.args]
+    command = [sys.executable, "-m", "deploy.cli", "deploy", "--config", str(config),
+               "--backend", "sim", "--yes", "--record", str(log_path), *args]
+    time_scale = float(yaml.safe_load(config.read_text())["sim"].get("time_scale", 1.0))
+    process = subprocess.Popen(command, stdout=subprocess.PIPE, stderr=subprocess.PIPE,
+                               text=True)
+    running = threading.Event()
+    errors: list[str] = []
+    output: list[str] = []
+
+    def read_stderr() -> None:
+        assert process.stderr is not None
+        for line in process.stderr:
+            errors.append(line)
+            if _RUNNING.search(line):
+                running.set()
+
+    def read_stdout() -> None:
+        assert process.stdout is not None
+        output.append(process.stdout.read())
+
+    readers = [threading.Thread(target=read, daemon=True) for read in (read_stderr, read_stdout)]
+    for reader in readers:
+        reader.start()
+    if fault.action != "none":
+        threading.Thread(target=_act, args=(process, fault, running, time_scale),
+                         daemon=True).start()
+    try:
+        process.wait(timeout=timeout_s)
+    except subprocess.TimeoutExpired:
+        process.kill()
+        process.wait()
+    for reader in readers:
+        reader.join(10.0)
+    running.set()  # release an actor still waiting
+    stdout = "".join(output)
+    (folder / "stderr.txt").write_text("".join(errors))
+    summary = _summary(stdout)
+    return _judge(fault, process.returncode, summary, "".join(errors), log_path, folder)
+
+
+def _summary(stdout: str) -> dict[str, Any] | None:
+    start = stdout.find("{")
+    try:
+        return json.loads(stdout[start:]) if start >= 0 else None
+    except json.JSONDecodeError:
+        return None
+
+
+def _log_state(path: Path, folder: Path) -> str:
+    if not path.exists():
+        return "none"
+    try:
+        if LogFile(path).summary() is not None:
+            return "yes"
+    except LogError:
+        pass
+    try:
+        recovered = recover(path, folder / "recovered.mcap")
+    except LogError as error:
+        return f"no ({error})"
+    return f"recovered ({recovered.messages} msgs)"
+
+
+def _judge(fault: DrillFault, code: int, summary: dict[str, Any] | None, stderr: str,
+           log_path: Path, folder: Path) -> DrillRow:
+    log = _log_state(log_path, folder)
+    if fault.expect in ("refused", "not started"):
+        wanted = 2 if fault.expect == "refused" else 1
+        text = stderr if summary is None else stderr + json.dumps(summary)
+        passed = code == wanted and fault.cause in text
+        detail = next((line.strip() for line in stderr.splitlines() if fault.cause in line),
+                      stderr.strip().splitlines()[-1] if stderr.strip() else "")
+        return DrillRow(fault.name, fault.expect, passed, None, "-" if summary is None
+                        else summary.get("final_state", "-"), None, log, code, detail[:110])
+    if summary is None:
+        return DrillRow(fault.name, fault.expect, False, None, "?", None, log, code,
+                        "no summary: " + stderr.strip()[-100:])
+    truth = summary.get("sim_ground_truth") or {}
+    robots = truth.get("robots") or {}
+    after = [robot.get("after_fault", {}) for robot in robots.values()]
+    firsts = [a.get("first_damping_s") for a in after if a.get("first_damping_s") is not None]
+    detected_ms = 1e3 * min(firsts) if firsts and truth.get("faults_applied") else None
+    non_damping = (sum(a.get("non_damping_after_damping", 0) for a in after)
+                   if truth.get("faults_applied") else None)
+    final, cause = summary.get("final_state", "?"), summary.get("safe_stop") or ""
+    if fault.expect == "safe stop":
+        passed = (code == 3 and final == "DONE" and fault.cause in cause
+                  and (non_damping in (0, None)))
+        detail = cause
+    elif fault.expect == "sit down":
+        passed = code == 130 and final == "DONE" and not cause
+        detail = summary.get("result", "")
+    else:  # ignored
+        rejected = sum(summary.get("rejected", {}).get(fault.rejected, {}).values())
+        passed = code == 0 and final == "DONE" and not cause and rejected > 0
+        detail = f"{rejected} {fault.rejected} packets refused; {summary.get('result', '')}"
+        if not math.isfinite(rejected):
+            passed = False
+    return DrillRow(fault.name, fault.expect, passed, detected_ms, final, non_damping, log,
+                    code, detail[:110])
+
+
+def format_table(rows: list[DrillRow]) -> str:
+    header = (f"{'fault':<44} {'expected':<11} {'ok':<3} {'detected [ms]':>13} "
+              f"{'final':<6} {'non-damping':>11} {'log':<10} {'exit':>4}  detail")
+    lines = [header, "-" * len(header)]
+    for row in rows:
+        detected = "-" if row.detected_after_ms is None else f"{row.detected_after_ms:.0f}"
+        non_damping = "-" if row.non_damping_after_detection is None \
+            else str(row.non_damping_after_detection)
+        lines.append(f"{row.fault:<44} {row.expect:<11} {'yes' if row.passed else 'NO':<3} "
+                     f"{detected:>13} {row.final_state:<6} {non_damping:>11} "
+                     f"{row.log[:10]:<10} {row.exit_code:>4}  {row.detail}")
+    passed = sum(row.passed for row in rows)
+    lines.append(f"{passed} of {len(rows)} faults handled as expected; detected: simulated ms "
+                 "from the fault to the first damping-only command a robot received; "
+                 "non-damping: commands that were not damping after that (must be 0)")
+    return "\n".join(lines)
