@@ -75,7 +75,7 @@ def catalogue() -> list[DrillFault]:
                    _sim("robot_push", "go2_0")),
         DrillFault("NMPC solver failure streak", stop, "NMPC solver failed",
                    _sim("nmpc_failure")),
-        DrillFault("NMPC process killed", stop, "NMPC", action="kill_nmpc"),
+        DrillFault("NMPC process killed", stop, "NMPC process lost", action="kill_nmpc"),
         DrillFault("flight recorder: disk full", stop, "flight recorder failed",
                    _sim("recorder_failure")),
         DrillFault("control loop stalls 0.3 s (watchdog)", stop, "watchdog took over",

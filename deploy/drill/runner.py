@@ -189,7 +189,8 @@ def _judge(fault: DrillFault, code: int, summary: dict[str, Any] | None, stderr:
     robots = truth.get("robots") or {}
     after = [robot.get("after_fault", {}) for robot in robots.values()]
     firsts = [a.get("first_damping_s") for a in after if a.get("first_damping_s") is not None]
-    detected_ms = 1e3 * min(firsts) if firsts and truth.get("faults_applied") else None
+    detected_ms = (1e3 * min(firsts) if firsts and truth.get("faults_applied")
+                   and fault.expect == "safe stop" else None)
     non_damping = (sum(a.get("non_damping_after_damping", 0) for a in after)
                    if truth.get("faults_applied") else None)
     final, cause = summary.get("final_state", "?"), summary.get("safe_stop") or ""

@@ -40,6 +40,7 @@ import numpy as np
 
 from core.estimation.base_velocity import BaseVelocityEstimator
 from core.model.conventions import PAYLOAD_NAME
+from deploy.nmpc_runtime.nmpc_process import NmpcProcessError
 from deploy.nmpc_runtime.nmpc_schedule import NmpcSchedule
 from deploy.recording.loop_recording import LoopRecording
 from deploy.runtime.clock import LoopClock
@@ -182,7 +183,10 @@ class ControlLoop:
             return True
         flags: tuple[bool | None, bool | None] = (None, None)
         if self.supervisor.state in (S.ARMED, S.RUNNING):
-            flags = self.nmpc.step(t, measurements, frame)
+            try:
+                flags = self.nmpc.step(t, measurements, frame)
+            except NmpcProcessError as error:  # it died: no plan will come; stop here
+                self.supervisor.trigger_safe_stop(t, f"NMPC process lost: {error}")
         stages.mark("nmpc")
         estop = self.links.estop.status() if self.links.estop is not None else None
         age = self.links.tracker.age_s(self.required_bodies) if self.links.tracker else None

@@ -68,7 +68,8 @@ def test_a_refused_config_must_exit_2_and_name_the_field(tmp_path: Path) -> None
 
 @pytest.mark.slow
 @pytest.mark.parametrize("name", ["e-stop pressed", "NatNet malformed packets",
-                                  "config: damping_kd 0", "NMPC solver failure streak"])
+                                  "config: damping_kd 0", "NMPC solver failure streak",
+                                  "NMPC process killed"])
 def test_drill_faults_end_to_end(tmp_path: Path, name: str) -> None:
     (fault,) = [f for f in catalogue() if f.name == name]
     row = run_fault(fault, tmp_path / "run")
