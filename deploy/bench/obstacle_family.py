@@ -82,10 +82,11 @@ def family() -> list[Scenario]:
     ]
 
 
-def baseline_settings() -> tuple[MpcSettings, bool]:
-    """MpcSettings of the behaviour before: hard barriers and no braking (and no governor)."""
+def baseline_settings() -> MpcSettings:
+    """MpcSettings of the behaviour before: hard barriers and no braking (the governor is the
+    scenario's, switched off in ``run_case``)."""
     return MpcSettings(safety=SafetySettings(soft_barriers=False),
-                       braking=BrakingSettings(enabled=False)), False
+                       braking=BrakingSettings(enabled=False))
 
 
 def run_case(scenario: Scenario, cache: CompiledCodeCache, baseline: bool = False) -> dict:
@@ -93,7 +94,7 @@ def run_case(scenario: Scenario, cache: CompiledCodeCache, baseline: bool = Fals
     ``outcome``."""
     base: MpcSettings | None = None
     if baseline:
-        base, _ = baseline_settings()
+        base = baseline_settings()
         scenario = scenario.model_copy(update={"reference": scenario.reference.model_copy(
             update={"max_lag_m": None})})
     scenario = scenario.model_copy(update={"controller": scenario.controller.model_copy(
