@@ -44,7 +44,7 @@ def _run(name: str, duration_s: float, executor: str, base: MpcSettings,
             lambda topic, message, t: capture.append((topic, message, t))
             if t <= 1_000_000_000 else None]
         recorder = open_run_recorder(log, scenario, loop.settings, loop.wbc_settings, "mujoco",
-                                     sinks=sinks)
+                                     sinks=sinks, blas_kernels=cache.blas_kernels().target)
         loop.attach_recorder(recorder)
     try:
         summary = loop.run()

@@ -123,7 +123,8 @@ def run_deploy(args: argparse.Namespace) -> int:
             recorder = open_run_recorder(
                 path, scenario, control.settings, control.wbc_settings, args.backend,
                 config.recorder, extra_attachments={DEPLOY_CONFIG_ATTACHMENT: yaml.safe_dump(
-                    config.model_dump(mode="json"), sort_keys=False).encode()})
+                    config.model_dump(mode="json"), sort_keys=False).encode()},
+                blas_kernels=control.cache.blas_kernels().target)
             say(f"recording to {path}")
         if process is not None:
             process.clock = clock

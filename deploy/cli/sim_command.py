@@ -51,7 +51,8 @@ def run_sim(args: argparse.Namespace, base_settings: MpcSettings) -> int:
         if getattr(args, "keyframe_every", None):
             settings = settings.model_copy(update={"warm_start_every": args.keyframe_every})
         recorder = open_run_recorder(path, scenario, loop.settings, loop.wbc_settings, "mujoco",
-                                     settings, sinks=live_view_sinks(args, scenario))
+                                     settings, sinks=live_view_sinks(args, scenario),
+                                     blas_kernels=loop.control.cache.blas_kernels().target)
         loop.attach_recorder(recorder)
         print(f"porter sim: recording to {path}", file=sys.stderr)
     show = not args.quiet

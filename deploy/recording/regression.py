@@ -7,8 +7,12 @@ logged ones: first-stage GRFs and wrenches, predicted payload (with ADMM: the co
 robot trajectories and wrenches (with ADMM: each robot's own local solution), ADMM residuals
 per iteration, and every solve's status.
 Between keyframes the warm start is the replayed previous decision, which is exact as long as
-the replay is. Then the log's summary metrics are checked against the expectations stored next to it
-(``LOG.expect.json``). Exit code 1 when anything is outside its tolerance.
+the replay is. The replay loads the BLASFEO kernels the log was recorded on (its
+``blas_kernels`` metadata) when this CPU has them and no other BLASFEO is loaded in the process
+yet; otherwise the report names both, because other kernels round differently and the RTI's
+single QP step carries that into the plan (measured on ``two_go2``: up to 1.1 N GRF, 0.2 rad/s
+terminal angular rate). Then the log's summary metrics are checked against the expectations
+stored next to it (``LOG.expect.json``). Exit code 1 when anything is outside its tolerance.
 """
 
 from __future__ import annotations
@@ -16,6 +20,7 @@ from __future__ import annotations
 import argparse
 import json
 import math
+import platform
 import sys
 from dataclasses import asdict, dataclass, field
 from pathlib import Path
@@ -37,6 +42,7 @@ from deploy.recording import log_format as fmt
 from deploy.recording.expectations import check_expectations, draft_expectations, expectations_path
 from deploy.recording.log_reader import LogError, LogFile
 from deploy.recording.messages import porter_log_pb2 as pb
+from deploy.runtime.blas_kernels import GENERIC, cpu_target, host_cpu_flags
 from deploy.runtime.codegen_cache import CompiledCodeCache
 from drivers.robot_descriptions import srb_parameters
 
@@ -63,6 +69,12 @@ class LogRegression:
     status_mismatches: int = 0
     first_failure: str = ""
     expectation_failures: list[str] = field(default_factory=list)
+    kernels_recorded: str = "unknown"  # BLASFEO target of the recording (its metadata)
+    kernels_replayed: str = "unknown"  # BLASFEO target of this replay
+
+    @property
+    def kernel_mismatch(self) -> bool:
+        return self.kernels_recorded not in ("unknown", self.kernels_replayed)
 
     @property
     def passed(self) -> bool:
@@ -89,6 +101,21 @@ def controller_from_log(log: LogFile, cache: CompiledCodeCache,
     if mode == "centralized":
         return CentralizedMpc(team, settings, compiler=cache), team
     return DistributedMpc(team, settings, compiler=cache), team
+
+
+def recorded_kernels(log: LogFile) -> str:
+    """The BLASFEO target the log's solvers ran on (``unknown`` for logs older than the key)."""
+    return log.metadata().get(fmt.RUN_METADATA, {}).get("blas_kernels", "unknown")
+
+
+def replay_blas_target(recorded: str) -> str:
+    """The ``CompiledCodeCache.blas_target`` that reproduces ``recorded`` kernels on this CPU:
+    that target when this CPU runs it, else this CPU's own (``auto``)."""
+    if recorded == GENERIC:
+        return "generic"
+    if recorded == cpu_target(platform.machine(), host_cpu_flags()):
+        return recorded
+    return "auto"
 
 
 def inputs_from_message(message: pb.NmpcInputs) -> MpcInputs:
@@ -155,8 +182,10 @@ def regress_log(path: Path | str, cache: CompiledCodeCache | None = None,
                 settings: MpcSettings | None = None,
                 max_decisions: int | None = None) -> LogRegression:
     log = LogFile(path)
-    report = LogRegression(str(path))
-    controller, _ = controller_from_log(log, cache or CompiledCodeCache(), settings)
+    report = LogRegression(str(path), kernels_recorded=recorded_kernels(log))
+    cache = cache or CompiledCodeCache(blas_target=replay_blas_target(report.kernels_recorded))
+    report.kernels_replayed = cache.blas_kernels().target
+    controller, _ = controller_from_log(log, cache, settings)
     topics = log.by_topic([fmt.NMPC_INPUTS, fmt.NMPC_WARM_START, fmt.NMPC_UPDATE, fmt.ADMM])
     inputs = {m.message.update: m.message for m in topics[fmt.NMPC_INPUTS]}
     keyframes = {m.message.update: m.message for m in topics[fmt.NMPC_WARM_START]}
@@ -199,8 +228,14 @@ def format_report(report: LogRegression) -> str:
     for key, tolerance in TOLERANCES.items():
         mark = "" if report.max_deviation[key] <= tolerance else "  <-- exceeds"
         lines.append(f"  {key:20s} {report.max_deviation[key]:14.3g} {tolerance:10.1g}{mark}")
+    lines.append(f"  BLAS kernels: replayed on {report.kernels_replayed}, recorded on "
+                 f"{report.kernels_recorded}")
     if report.first_failure:
         lines.append(f"  first failure: {report.first_failure}")
+    if report.kernel_mismatch and not report.passed:
+        lines.append("  the replay ran on other BLAS kernels than the recording: deviations of "
+                     "about a newton are rounding, not a changed controller; replay in a fresh "
+                     f"process on a CPU with {report.kernels_recorded} kernels to compare")
     lines.extend(f"  expectation: {failure}" for failure in report.expectation_failures)
     return "\n".join(lines)
 
@@ -226,10 +261,12 @@ def run_regress(args: argparse.Namespace) -> int:
     if args.refresh_expectations:
         return refresh_expectations(args.logs)
     settings = load_settings(args.settings, MpcSettings) if args.settings else None
-    cache = CompiledCodeCache()
+    cache: CompiledCodeCache | None = None  # one per process: kernels load once
     reports = []
     for path in args.logs:
         try:
+            cache = cache or CompiledCodeCache(blas_target=replay_blas_target(
+                recorded_kernels(LogFile(path))))
             report = regress_log(path, cache, settings, args.max_decisions)
         except (LogError, ConfigError) as error:
             print(f"porter: {error}", file=sys.stderr)

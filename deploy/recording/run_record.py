@@ -50,7 +50,10 @@ def _version(package: str) -> str:
         return "absent"
 
 
-def run_metadata(scenario: Scenario, backend: str) -> dict[str, str]:
+def run_metadata(scenario: Scenario, backend: str, blas_kernels: str = "unknown"
+                 ) -> dict[str, str]:
+    """The run's identity; ``blas_kernels``: the BLASFEO target its solvers ran on (a replay
+    agrees bit for bit only on the same kernels, see ``porter regress``)."""
     return {
         "log_format_version": str(LOG_FORMAT_VERSION),
         "porter_version": _version("porter"),
@@ -58,6 +61,7 @@ def run_metadata(scenario: Scenario, backend: str) -> dict[str, str]:
         "scenario": scenario.name,
         "seed": str(scenario.seed),
         "backend": backend,
+        "blas_kernels": blas_kernels,
         "controller_mode": scenario.controller.mode,
         "robots": ",".join(agent.name for agent in scenario.team),
         "started_utc": datetime.datetime.now(datetime.UTC).isoformat(timespec="seconds"),
@@ -87,12 +91,13 @@ def open_run_recorder(path: Path | str, scenario: Scenario, mpc_settings: MpcSet
                       wbc_settings: WbcSettings, backend: str,
                       settings: RecorderSettings | None = None,
                       sinks: list[Sink] | None = None,
-                      extra_attachments: dict[str, bytes] | None = None) -> FlightRecorder:
+                      extra_attachments: dict[str, bytes] | None = None,
+                      blas_kernels: str = "unknown") -> FlightRecorder:
     """A flight recorder on ``path`` with the run's metadata and attachments (plus
-    ``extra_attachments``, e.g. the deploy config)."""
+    ``extra_attachments``, e.g. the deploy config); ``blas_kernels`` as in ``run_metadata``."""
     attachments = {**run_attachments(scenario, mpc_settings, wbc_settings),
                    **(extra_attachments or {})}
-    return FlightRecorder(path, settings, {RUN_METADATA: run_metadata(scenario, backend)},
+    return FlightRecorder(path, settings, {RUN_METADATA: run_metadata(scenario, backend, blas_kernels)},
                           attachments, sinks or [])
 
 

@@ -4,6 +4,7 @@ MoCap tracker, the base velocity estimate, pacing) on their own."""
 
 from __future__ import annotations
 
+import platform
 import re
 import signal
 import subprocess
@@ -24,6 +25,7 @@ from deploy.config.deploy_config import CONFIG_DIR, load_deploy_config
 from deploy.config.files import ConfigError
 from deploy.config.scenario import load_scenario
 from deploy.recording.log_reader import LogFile
+from deploy.runtime.blas_kernels import GENERIC, cpu_target, host_cpu_flags
 from deploy.runtime.timing import Pacer, PeriodStats
 from deploy.safety.posture import PostureMove, sitting_posture, standing_posture
 from drivers.interfaces import JointCommand
@@ -82,6 +84,10 @@ def test_deploy_on_the_sim_backend_stands_walks_carries_and_sits_down(
     # every decision's outcome is logged, but for one still running when the team sat down
     assert counts["/nmpc/inputs"] - counts["/nmpc/update"] in (0, 1)
     assert log.metadata()["porter"]["backend"] == "sim"
+    # the kernels its solvers ran on, for a later replay: this CPU's, or CasADi's where this
+    # process had loaded those first
+    assert log.metadata()["porter"]["blas_kernels"] in {
+        GENERIC, cpu_target(platform.machine(), host_cpu_flags())}
     as_run = yaml.safe_load(log.attachment_text("deploy_config.yaml"))
     assert as_run["scenario"] == "two_go2" and as_run["nmpc"]["runner"] == "process"
     # walked and carried: the payload moved toward the goal (MoCap), nobody fell (truth)
