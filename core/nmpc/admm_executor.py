@@ -1,6 +1,7 @@
 """Where ADMM local solves run. The algorithm hands over plain arrays and gets solutions back,
 so the same code runs serially, in worker processes
-(``deploy.nmpc_runtime.process_executor``) or, later, on separate machines."""
+(``deploy.nmpc_runtime.process_executor``) or in agent processes over a network
+(``deploy.agents.zenoh_executor``)."""
 
 from __future__ import annotations
 
@@ -26,6 +27,8 @@ class LocalSolveRequest:
     constraint_multipliers: np.ndarray | None = None
     bound_multipliers: np.ndarray | None = None
     warm_start: bool = True  # False when the guess is not a previous solution
+    update: int = 0  # MPC update number (for messages on a network, and their logs)
+    iteration: int = 0  # ADMM iteration within the update
 
 
 @dataclass(frozen=True)

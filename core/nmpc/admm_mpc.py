@@ -48,6 +48,7 @@ class DistributedMpc:
         self.settings = settings
         self.problem = build_transport_problem(settings, team.agent_count, local=True)
         self.weights = self.problem.consensus_weights()
+        self._updates = 0  # MPC updates so far (numbers the local-solve requests)
         self._payload_size = settings.horizon_steps * STATE_SIZE
         self.executor = executor or SerialExecutor(
             LocalSolverSpec(settings, team.agent_count, compiler)
@@ -106,7 +107,8 @@ class DistributedMpc:
                        for previous in self._previous]
         solutions: list[NlpSolution] = []
         records: list[AdmmIteration] = []
-        for _ in range(iterations):
+        self._updates += 1
+        for iteration in range(iterations):
             requests = []
             for i in range(na):
                 warm = ((solutions[i].constraint_multipliers, solutions[i].bound_multipliers)
@@ -122,6 +124,8 @@ class DistributedMpc:
                     constraint_multipliers=None if warm is None else warm[0],
                     bound_multipliers=None if warm is None else warm[1],
                     warm_start=warm is not None,
+                    update=self._updates,
+                    iteration=iteration,
                 ))
             results = self.executor.solve_all(requests)
             solutions = [result if np.all(np.isfinite(result.decision))

@@ -9,6 +9,8 @@ import sys
 from pathlib import Path
 from typing import TYPE_CHECKING
 
+from deploy.cli.agent_command import add_agent_parser
+
 if TYPE_CHECKING:
     from core.nmpc.settings import MpcSettings
 
@@ -304,6 +306,8 @@ def build_parser() -> argparse.ArgumentParser:
                      help="override the scenario's controller.mode")
     sim.add_argument("--serial", action="store_true",
                      help="run ADMM local solves in this process instead of one per agent")
+    sim.add_argument("--executor", choices=["process", "serial", "zenoh"],
+                     help="where ADMM local solves run (zenoh: `porter agent` processes)")
     sim.add_argument("--delay", action="store_true",
                      help="model computation delay (apply each plan after its solve time)")
     sim.add_argument("--quiet", action="store_true", help="no progress bar")
@@ -363,6 +367,7 @@ def build_parser() -> argparse.ArgumentParser:
                          help="(re)write LOG.expect.json from each log's summary instead of "
                               "replaying: review and commit the result deliberately")
     regress.set_defaults(handler=_regress)
+    add_agent_parser(commands)
     return parser
 
 

@@ -9,6 +9,7 @@ import sys
 from pathlib import Path
 
 from core.nmpc.settings import MpcSettings
+from deploy.config.files import ConfigError
 from deploy.config.scenario import Scenario, load_scenario
 from deploy.recording.flight_recorder import FlightRecorder, RecorderSettings
 from deploy.recording.run_record import default_log_path, open_run_recorder
@@ -29,8 +30,11 @@ def scenario_from_args(args: argparse.Namespace) -> Scenario:
     controller: dict = {}
     if args.mode is not None:
         controller["mode"] = args.mode
-    if args.serial:
-        controller["executor"] = "serial"
+    executor = getattr(args, "executor", None)
+    if args.serial and executor not in (None, "serial"):
+        raise ConfigError(f"--serial and --executor {executor} contradict each other")
+    if args.serial or executor:
+        controller["executor"] = executor or "serial"
     if args.delay:
         controller["model_computation_delay"] = True
     if controller:

@@ -27,6 +27,7 @@ from core.model.strict_model import StrictModel
 from core.model.team_settings import AgentSettings, PayloadSettings, TeamSettings
 from core.nmpc.reference import WaypointReference
 from core.nmpc.settings import MpcSettings, SafetySettings
+from deploy.agents.zenoh_session import AgentNetwork
 from deploy.config.files import ConfigError, load_settings
 
 SCENARIO_DIR = Path(__file__).parent / "scenarios"
@@ -116,7 +117,10 @@ class ControllerSpec(StrictModel):
     admm_iterations: int = Field(2, ge=1)
     rho_state: float = Field(1e4, ge=0)
     rho_wrench: float = Field(1e3, gt=0)
-    executor: Literal["process", "serial"] = "process"
+    # ADMM local solves: worker processes of this machine (pipes), serially in this process,
+    # or ``porter agent`` processes over Zenoh (``network``: where they meet).
+    executor: Literal["process", "serial", "zenoh"] = "process"
+    network: AgentNetwork = AgentNetwork()
     # Simulation only: a plan takes effect when its computation would have finished: after
     # its measured update time, or after ``computation_delay_s`` when set (deterministic).
     model_computation_delay: bool = False

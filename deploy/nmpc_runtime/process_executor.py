@@ -73,7 +73,7 @@ class ProcessExecutor:
                 reason = "worker did not answer in time" if ok else "worker is gone"
             except (EOFError, OSError):
                 reason = "worker died"
-            results.append(_failed(request, reason))
+            results.append(failed_solution(request, reason))
         return results
 
     def _receive(self, connection: Connection) -> NlpSolution | None:
@@ -99,7 +99,7 @@ class ProcessExecutor:
             self.close()
 
 
-def _failed(request: LocalSolveRequest, reason: str) -> NlpSolution:
+def failed_solution(request: LocalSolveRequest, reason: str) -> NlpSolution:
     n = request.initial_guess.size
     m = 0 if request.constraint_multipliers is None else request.constraint_multipliers.size
     stats = SolveStats(f"executor: {reason}", False, 0, 0.0, float("nan"), float("inf"))

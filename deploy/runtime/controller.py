@@ -36,6 +36,7 @@ from core.nmpc.mpc_inputs import MpcInputs
 from core.nmpc.mpc_plan import MpcPlan
 from core.nmpc.reference import BrakingReference, WaypointReference
 from core.nmpc.settings import MpcSettings
+from deploy.agents.zenoh_executor import ZenohExecutor
 from deploy.config.scenario import Scenario
 from deploy.nmpc_runtime.process_executor import ProcessExecutor
 from deploy.recording.flight_recorder import FlightRecorder
@@ -97,7 +98,11 @@ def build_team_mpc(scenario: Scenario, settings: MpcSettings, cache: CompiledCod
     if scenario.controller.mode == "centralized":
         return CentralizedMpc(team, settings, compiler=cache)
     spec = LocalSolverSpec(settings, team.agent_count, cache)
-    executor = ProcessExecutor(spec) if scenario.controller.executor == "process" else None
+    executor: ProcessExecutor | ZenohExecutor | None = None
+    if scenario.controller.executor == "process":
+        executor = ProcessExecutor(spec)
+    elif scenario.controller.executor == "zenoh":
+        executor = ZenohExecutor(spec, scenario.controller.network, scenario.name)
     return DistributedMpc(team, settings, executor=executor, compiler=cache)
 
 

@@ -1,0 +1,141 @@
+"""``porter agent``: one robot's ADMM local solver as a process of its own, served over Zenoh.
+
+The agent builds its local NLP once, announces itself (``Hello``: team, agent, problem digest,
+host, pid) every heartbeat, and answers each ``SolveRequest`` on its key with a ``SolveReply``.
+Malformed, foreign and other-problem requests are dropped and counted, never solved. When
+requests queue up (a slow solve), only the newest is solved: the coordinator waits for that
+round only. It exits on the coordinator's stop message, when its parent process (the one that
+spawned it, if any) is gone, or on SIGTERM/Ctrl-C.
+"""
+
+from __future__ import annotations
+
+import contextlib
+import os
+import queue
+import socket
+import threading
+from collections import Counter
+from dataclasses import dataclass
+
+from core.nmpc.admm_executor import LocalSolverSpec, solve_request
+from deploy.agents import wire
+from deploy.agents.zenoh_session import (
+    concrete_endpoint,
+    hello_key,
+    open_session,
+    reply_key,
+    request_key,
+)
+
+HEARTBEAT_S = 0.5
+
+
+@dataclass(frozen=True)
+class AgentAddress:
+    """Who the agent is and where it meets the coordinator."""
+
+    team: str
+    agent: int
+    key_prefix: str
+    connect: list[str]
+    listen: list[str]
+
+
+def problem_sizes(spec: LocalSolverSpec, solver: object) -> wire.ProblemSizes:
+    problem = solver.problem  # type: ignore[attr-defined]
+    return wire.ProblemSizes(problem.decision.size, problem.parameters.size,
+                             problem.lower_constraints.size)
+
+
+class AdmmAgent:
+    """One agent's local solver behind Zenoh; ``serve`` runs until told to stop."""
+
+    def __init__(self, spec: LocalSolverSpec, address: AgentAddress,
+                 parent_pid: int | None = None) -> None:
+        if not 0 <= address.agent < spec.agent_count:
+            raise ValueError(f"agent {address.agent} is not in a team of {spec.agent_count}")
+        self.spec = spec
+        self.address = address
+        self.parent_pid = parent_pid
+        self.solver = spec.build()
+        self.sizes = problem_sizes(spec, self.solver)
+        self.digest = wire.problem_digest(spec)
+        self.rejected: Counter[str] = Counter()
+        self.solved = 0
+        self.superseded = 0  # requests replaced by a newer one before they were solved
+        self._inbox: queue.Queue[bytes] = queue.Queue()
+        self._stop = threading.Event()
+
+    def serve(self) -> None:
+        a = self.address
+        session = open_session([concrete_endpoint(e) for e in a.listen], a.connect)
+        try:
+            session.declare_subscriber(request_key(a.key_prefix, a.agent),
+                                       lambda sample: self._inbox.put(sample.payload.to_bytes()))
+            replies = session.declare_publisher(reply_key(a.key_prefix, a.agent))
+            hellos = session.declare_publisher(hello_key(a.key_prefix, a.agent))
+            heartbeat = threading.Thread(target=self._heartbeat, args=(hellos,), daemon=True,
+                                         name="porter-agent-heartbeat")
+            heartbeat.start()
+            while not self._stop.is_set():
+                data = self._newest(timeout_s=HEARTBEAT_S)
+                if data is not None:
+                    self._answer(data, replies)
+        finally:
+            self._stop.set()
+            with contextlib.suppress(Exception):
+                session.close()
+
+    def stop(self) -> None:
+        self._stop.set()
+
+    def _newest(self, timeout_s: float) -> bytes | None:
+        try:
+            data = self._inbox.get(timeout=timeout_s)
+        except queue.Empty:
+            return None
+        while True:
+            try:
+                newer = self._inbox.get_nowait()
+            except queue.Empty:
+                return data
+            self.superseded += 1
+            data = newer
+
+    def _answer(self, data: bytes, replies: object) -> None:
+        a = self.address
+        try:
+            sequence, request = wire.decode_request(data, a.team, self.spec.agent_count,
+                                                    self.digest, self.sizes)
+        except wire.WireError as error:
+            self.rejected[error.reason.split(":")[0]] += 1
+            return
+        if request is None:
+            self._stop.set()
+            return
+        if request.agent != a.agent:
+            self.rejected["request for another agent"] += 1
+            return
+        solution = solve_request(self.solver, request)
+        replies.put(wire.encode_reply(solution, a.team, a.agent,  # type: ignore[attr-defined]
+                                      sequence, request))
+        self.solved += 1
+
+    def _heartbeat(self, hellos: object) -> None:
+        host = socket.gethostname()
+        while not self._stop.is_set():
+            if self.parent_pid is not None and not _alive(self.parent_pid):
+                self._stop.set()  # spawned by a coordinator that is gone
+                break
+            hello = wire.encode_hello(self.address.team, self.address.agent, self.digest, host,
+                                      os.getpid(), self.solved)
+            with contextlib.suppress(Exception):
+                hellos.put(hello)  # type: ignore[attr-defined]
+            self._stop.wait(HEARTBEAT_S)
+
+
+def _alive(parent_pid: int) -> bool:
+    """Whether the process that spawned this one still is its parent (an orphan is adopted
+    by another process, so a dead or killed coordinator shows as a changed parent)."""
+    return os.getppid() == parent_pid

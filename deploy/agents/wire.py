@@ -1,0 +1,170 @@
+"""ADMM messages on the wire: ``LocalSolveRequest`` / ``NlpSolution`` <-> protobuf bytes.
+
+The schema is ``messages/admm_wire.proto`` (versioned by ``WIRE_VERSION``). Decoding checks
+everything a receiver relies on before it uses a message: it parses, it has this version,
+this team, an agent of the team, arrays of the problem's sizes and finite values where a
+solver needs them. A message that fails raises ``WireError`` with a short reason the
+receiver counts; it never reaches a solver or the ADMM.
+"""
+
+from __future__ import annotations
+
+import hashlib
+import math
+from dataclasses import dataclass
+
+import numpy as np
+from google.protobuf.message import DecodeError
+
+from core.nmpc.admm_executor import LocalSolveRequest, LocalSolverSpec
+from core.nmpc.nlp_solver import NlpSolution, SolveStats
+from deploy.agents.messages import admm_wire_pb2 as pb
+
+WIRE_VERSION = 1
+_FLOAT = np.dtype("<f8")
+
+
+class WireError(ValueError):
+    """A received message that is malformed, foreign or inconsistent (``reason`` is short)."""
+
+    def __init__(self, reason: str) -> None:
+        super().__init__(reason)
+        self.reason = reason
+
+
+@dataclass(frozen=True)
+class ProblemSizes:
+    """Lengths of the local NLP's vectors: decision, parameters, constraints."""
+
+    decision: int
+    parameters: int
+    constraints: int
+
+
+def problem_digest(spec: LocalSolverSpec) -> str:
+    """Identity of a local problem: the effective NMPC settings and the team size. A
+    coordinator and an agent with different digests would solve different problems."""
+    text = f"{spec.agent_count}|{spec.settings.model_dump_json()}"
+    return hashlib.sha256(text.encode()).hexdigest()[:16]
+
+
+def _pack(array: np.ndarray | None) -> bytes:
+    return b"" if array is None else np.ascontiguousarray(array, dtype=_FLOAT).tobytes()
+
+
+def _unpack(data: bytes, size: int, name: str, finite: bool = True) -> np.ndarray:
+    if len(data) != size * _FLOAT.itemsize:
+        raise WireError(f"{name} has {len(data) // _FLOAT.itemsize} values, "
+                              f"expected {size}")
+    array = np.frombuffer(data, dtype=_FLOAT).copy()
+    if finite and not np.all(np.isfinite(array)):
+        raise WireError(f"{name} is not finite")
+    return array
+
+
+def _parse(message_type: type, data: bytes) -> object:
+    message = message_type()
+    try:
+        message.ParseFromString(data)
+    except (DecodeError, RuntimeWarning, ValueError) as error:
+        raise WireError(f"not a {message_type.__name__}: {error}") from None
+    return message
+
+
+def _check_header(message: object, team: str, agent_count: int) -> None:
+    if message.wire_version != WIRE_VERSION:  # type: ignore[attr-defined]
+        raise WireError(f"wire version {message.wire_version}, "  # type: ignore[attr-defined]
+                              f"expected {WIRE_VERSION}")
+    if message.team != team:  # type: ignore[attr-defined]
+        raise WireError(f"foreign team {message.team!r}")  # type: ignore[attr-defined]
+    if message.agent >= agent_count:  # type: ignore[attr-defined]
+        raise WireError(f"agent {message.agent} not in a team of "  # type: ignore[attr-defined]
+                              f"{agent_count}")
+
+
+def encode_request(request: LocalSolveRequest, team: str, sequence: int, digest: str) -> bytes:
+    warm = request.constraint_multipliers is not None and request.bound_multipliers is not None
+    return pb.SolveRequest(
+        wire_version=WIRE_VERSION, team=team, agent=request.agent, sequence=sequence,
+        update=request.update, iteration=request.iteration, problem_digest=digest,
+        initial_guess=_pack(request.initial_guess), parameters=_pack(request.parameters),
+        lower_bounds=_pack(request.lower_bounds), upper_bounds=_pack(request.upper_bounds),
+        has_multipliers=warm, constraint_multipliers=_pack(request.constraint_multipliers),
+        bound_multipliers=_pack(request.bound_multipliers), warm_start=request.warm_start,
+    ).SerializeToString()
+
+
+def encode_stop(team: str, agent: int) -> bytes:
+    return pb.SolveRequest(wire_version=WIRE_VERSION, team=team, agent=agent,
+                           stop=True).SerializeToString()
+
+
+def decode_request(data: bytes, team: str, agent_count: int, digest: str,
+                   sizes: ProblemSizes) -> tuple[int, LocalSolveRequest | None]:
+    """(sequence, request) of a request for this team's problem; request None for a stop."""
+    message = _parse(pb.SolveRequest, data)
+    _check_header(message, team, agent_count)
+    assert isinstance(message, pb.SolveRequest)
+    if message.stop:
+        return message.sequence, None
+    if message.problem_digest != digest:
+        raise WireError(f"problem {message.problem_digest}, this agent holds {digest}")
+    n, m = sizes.decision, sizes.constraints
+    multipliers = ((_unpack(message.constraint_multipliers, m, "constraint multipliers"),
+                    _unpack(message.bound_multipliers, n, "bound multipliers"))
+                   if message.has_multipliers else (None, None))
+    # Bounds may be infinite (free variables); guesses and parameters may not.
+    return message.sequence, LocalSolveRequest(
+        agent=message.agent, initial_guess=_unpack(message.initial_guess, n, "initial guess"),
+        parameters=_unpack(message.parameters, sizes.parameters, "parameters"),
+        lower_bounds=_unpack(message.lower_bounds, n, "lower bounds", finite=False),
+        upper_bounds=_unpack(message.upper_bounds, n, "upper bounds", finite=False),
+        constraint_multipliers=multipliers[0], bound_multipliers=multipliers[1],
+        warm_start=message.warm_start, update=message.update, iteration=message.iteration)
+
+
+def encode_reply(solution: NlpSolution, team: str, agent: int, sequence: int,
+                 request: LocalSolveRequest) -> bytes:
+    s = solution.stats
+    stats = pb.SolveStats(status=s.status, success=s.success, iterations=s.iterations,
+                          wall_time_s=s.wall_time_s, objective=s.objective,
+                          constraint_violation=s.constraint_violation, cpu_time_s=s.cpu_time_s)
+    return pb.SolveReply(
+        wire_version=WIRE_VERSION, team=team, agent=agent, sequence=sequence,
+        update=request.update, iteration=request.iteration, decision=_pack(solution.decision),
+        constraint_multipliers=_pack(solution.constraint_multipliers),
+        bound_multipliers=_pack(solution.bound_multipliers), stats=stats,
+    ).SerializeToString()
+
+
+def decode_reply(data: bytes, team: str, agent_count: int, sizes: ProblemSizes
+                 ) -> tuple[int, int, NlpSolution]:
+    """(agent, sequence, solution) of a reply. A failed solve may carry non-finite values
+    (the ADMM replaces them); a successful one may not."""
+    message = _parse(pb.SolveReply, data)
+    _check_header(message, team, agent_count)
+    assert isinstance(message, pb.SolveReply)
+    s = message.stats
+    success = s.success
+    n = sizes.decision
+    solution = NlpSolution(
+        _unpack(message.decision, n, "decision", finite=success),
+        _unpack(message.constraint_multipliers, sizes.constraints, "constraint multipliers",
+                finite=success),
+        _unpack(message.bound_multipliers, n, "bound multipliers", finite=success),
+        SolveStats(s.status, success, s.iterations, s.wall_time_s,
+                   s.objective if math.isfinite(s.objective) else math.nan,
+                   s.constraint_violation, s.cpu_time_s))
+    return message.agent, message.sequence, solution
+
+
+def encode_hello(team: str, agent: int, digest: str, host: str, pid: int, solved: int) -> bytes:
+    return pb.Hello(wire_version=WIRE_VERSION, team=team, agent=agent, problem_digest=digest,
+                    host=host, pid=pid, solved=solved).SerializeToString()
+
+
+def decode_hello(data: bytes, team: str, agent_count: int) -> pb.Hello:
+    message = _parse(pb.Hello, data)
+    _check_header(message, team, agent_count)
+    assert isinstance(message, pb.Hello)
+    return message

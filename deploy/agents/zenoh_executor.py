@@ -1,0 +1,193 @@
+"""ADMM local solves on ``porter agent`` processes over Zenoh (the paper's coordinator topology:
+this process, the NMPC loop, computes the consensus and the duals; agents solve).
+
+Each round publishes one ``SolveRequest`` per agent and waits up to ``reply_timeout_s`` for
+the replies of that round; a silent agent yields a failed solve for its robot (the ADMM's and
+the supervisor's failure rules apply: fallback to the last plan, braking, safe stop), late
+replies of earlier rounds are dropped and counted, malformed or foreign messages too.
+"""
+
+from __future__ import annotations
+
+import contextlib
+import os
+import subprocess
+import sys
+import tempfile
+import threading
+import time
+from collections import Counter
+from pathlib import Path
+
+import yaml
+
+from core.nmpc.admm_executor import LocalSolveRequest, LocalSolverSpec
+from core.nmpc.nlp_solver import NlpSolution
+from core.nmpc.transport_problem import build_transport_problem
+from deploy.agents import wire
+from deploy.agents.zenoh_session import (
+    AgentNetwork,
+    concrete_endpoint,
+    hello_key,
+    open_session,
+    reply_key,
+    request_key,
+)
+from deploy.nmpc_runtime.process_executor import failed_solution
+
+_STDERR_TAIL = 1500
+
+
+class ZenohExecutor:
+    """``LocalSolveExecutor`` whose agents are processes reached over Zenoh."""
+
+    def __init__(self, spec: LocalSolverSpec, network: AgentNetwork, team: str) -> None:
+        self.spec = spec
+        self.network = network
+        self.team = team
+        self.key_prefix = network.key_prefix or f"porter/{team}/{os.getpid()}"
+        self.endpoints = [concrete_endpoint(e) for e in network.listen]
+        nlp = build_transport_problem(spec.settings, spec.agent_count, local=True).nlp
+        self.sizes = wire.ProblemSizes(nlp.decision.size, nlp.parameters.size,
+                                       nlp.lower_constraints.size)
+        self.digest = wire.problem_digest(spec)
+        self.rejected: Counter[str] = Counter()  # dropped messages by reason
+        self.late_replies = 0  # replies of an earlier round, dropped
+        self.hellos: dict[int, wire.pb.Hello] = {}
+        self.last_seen_s: dict[int, float] = {}
+        self._sequence = 0
+        self._replies: dict[int, NlpSolution] = {}
+        self._condition = threading.Condition()
+        self._processes: list[subprocess.Popen[bytes]] = []
+        self._stderr: list[tempfile._TemporaryFileWrapper[bytes]] = []
+        self._settings_file: Path | None = None
+        self._session = open_session(self.endpoints, [])
+        try:
+            self._session.declare_subscriber(reply_key(self.key_prefix, "*"), self._on_reply)
+            self._session.declare_subscriber(hello_key(self.key_prefix, "*"), self._on_hello)
+            self._publishers = [self._session.declare_publisher(request_key(self.key_prefix, i))
+                                for i in range(spec.agent_count)]
+            if network.spawn_agents:
+                self._spawn_agents()
+            self._wait_for_agents(network.start_timeout_s)
+        except BaseException:
+            self.close()
+            raise
+
+    # --- agents -------------------------------------------------------------------------------
+    def agent_command(self, agent: int, settings_file: Path) -> list[str]:
+        """The command line that starts ``agent`` against this coordinator."""
+        return [sys.executable, "-m", "deploy.cli", "agent", "--settings", str(settings_file),
+                "--agents", str(self.spec.agent_count), "--index", str(agent),
+                "--team", self.team, "--key-prefix", self.key_prefix,
+                "--connect", self.endpoints[0], "--parent-pid", str(os.getpid())]
+
+    def _spawn_agents(self) -> None:
+        handle, name = tempfile.mkstemp(prefix="porter-agent-", suffix=".yaml")
+        with os.fdopen(handle, "w") as file:
+            yaml.safe_dump(self.spec.settings.model_dump(mode="json"), file)
+        self._settings_file = Path(name)
+        for agent in range(self.spec.agent_count):
+            # stderr into a file, not a pipe: nobody reads a pipe while the run goes on
+            self._stderr.append(tempfile.NamedTemporaryFile(  # noqa: SIM115 (closed in close)
+                prefix=f"porter-agent{agent}-"))
+            self._processes.append(subprocess.Popen(
+                self.agent_command(agent, self._settings_file), stdout=subprocess.DEVNULL,
+                stderr=self._stderr[-1], cwd=Path(__file__).resolve().parents[2]))
+
+    def _wait_for_agents(self, timeout_s: float) -> None:
+        deadline = time.monotonic() + timeout_s
+        with self._condition:
+            while len(self.hellos) < self.spec.agent_count:
+                for agent, process in enumerate(self._processes):
+                    if process.poll() is not None:
+                        self._stderr[agent].seek(0)
+                        error = self._stderr[agent].read().decode(errors="replace")
+                        raise RuntimeError(f"ADMM agent {agent} exited with code "
+                                           f"{process.returncode}:\n{error[-_STDERR_TAIL:]}")
+                remaining = deadline - time.monotonic()
+                if remaining <= 0:
+                    missing = sorted(set(range(self.spec.agent_count)) - set(self.hellos))
+                    raise RuntimeError(f"ADMM agents {missing} did not announce themselves on "
+                                       f"{self.key_prefix} within {timeout_s:g} s")
+                self._condition.wait(min(remaining, 0.5))
+        for agent, hello in self.hellos.items():
+            if hello.problem_digest != self.digest:
+                raise RuntimeError(f"ADMM agent {agent} ({hello.host}, pid {hello.pid}) holds "
+                                   f"problem {hello.problem_digest}, this team's is "
+                                   f"{self.digest}: start it with the same settings")
+
+    # --- receiving ----------------------------------------------------------------------------
+    def _on_hello(self, sample: object) -> None:
+        try:
+            hello = wire.decode_hello(sample.payload.to_bytes(),  # type: ignore[attr-defined]
+                                      self.team, self.spec.agent_count)
+        except wire.WireError as error:
+            self._reject(error)
+            return
+        with self._condition:
+            self.hellos[hello.agent] = hello
+            self.last_seen_s[hello.agent] = time.monotonic()
+            self._condition.notify_all()
+
+    def _on_reply(self, sample: object) -> None:
+        try:
+            agent, sequence, solution = wire.decode_reply(
+                sample.payload.to_bytes(), self.team,  # type: ignore[attr-defined]
+                self.spec.agent_count, self.sizes)
+        except wire.WireError as error:
+            self._reject(error)
+            return
+        with self._condition:
+            self.last_seen_s[agent] = time.monotonic()
+            if sequence != self._sequence:
+                self.late_replies += 1
+                return
+            self._replies[agent] = solution
+            self._condition.notify_all()
+
+    def _reject(self, error: wire.WireError) -> None:
+        with self._condition:
+            self.rejected[error.reason.split(":")[0]] += 1
+
+    # --- LocalSolveExecutor -------------------------------------------------------------------
+    def solve_all(self, requests: list[LocalSolveRequest]) -> list[NlpSolution]:
+        with self._condition:
+            self._sequence += 1
+            self._replies = {}
+            sequence = self._sequence
+        for request in requests:
+            self._publishers[request.agent].put(
+                wire.encode_request(request, self.team, sequence, self.digest))
+        wanted = {request.agent for request in requests}
+        deadline = time.monotonic() + self.network.reply_timeout_s
+        with self._condition:
+            while not wanted <= set(self._replies):
+                remaining = deadline - time.monotonic()
+                if remaining <= 0:
+                    break
+                self._condition.wait(remaining)
+            replies = dict(self._replies)
+        return [replies[r.agent] if r.agent in replies else failed_solution(
+                    r, f"agent {r.agent} did not answer within "
+                       f"{self.network.reply_timeout_s:g} s")
+                for r in requests]
+
+    def close(self) -> None:
+        for agent, publisher in enumerate(getattr(self, "_publishers", [])):
+            with contextlib.suppress(Exception):
+                publisher.put(wire.encode_stop(self.team, agent))
+        for process in self._processes:
+            try:
+                process.wait(timeout=2.0)
+            except subprocess.TimeoutExpired:
+                process.kill()
+                process.wait()
+        for file in self._stderr:
+            file.close()
+        self._processes, self._stderr = [], []
+        with contextlib.suppress(Exception):
+            self._session.close()
+        if self._settings_file is not None:
+            self._settings_file.unlink(missing_ok=True)
+            self._settings_file = None

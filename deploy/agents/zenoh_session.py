@@ -1,0 +1,89 @@
+"""Zenoh sessions for ADMM agents: settings, key expressions, peer-mode sessions.
+
+Peer mode with multicast scouting off: a session talks only to the endpoints it is given
+(loopback by default), so a run never reaches into the LAN unasked and two teams on one
+machine meet only if they share a key prefix (each run gets its own by default).
+"""
+
+from __future__ import annotations
+
+import json
+import re
+import socket
+
+import zenoh
+from pydantic import Field, field_validator
+
+from core.model.strict_model import StrictModel
+
+_ENDPOINT = re.compile(r"^(tcp|udp|quic|tls|unixsock-stream)/\S+$")
+_PREFIX = re.compile(r"^[A-Za-z0-9_\-]+(/[A-Za-z0-9_\-]+)*$")
+
+
+class AgentNetwork(StrictModel):
+    """Where the coordinator (the NMPC loop) and the agents meet.
+
+    ``listen``: the coordinator's Zenoh endpoints (``tcp/127.0.0.1:0``: a free loopback
+    port); agents started by porter connect to the first one, agents started by hand
+    (``porter agent --connect``) to any. ``key_prefix``: the team's key expressions
+    (None: ``porter/<scenario>/<process id>``, unique per run). ``spawn_agents``: porter
+    starts one ``porter agent`` process per robot on this machine; False waits for agents
+    started elsewhere. ``reply_timeout_s``: an agent silent this long in a round is a failed
+    local solve (the ADMM's failure rules apply); ``start_timeout_s``: how long to wait for
+    every agent's hello (a cold agent compiles its NLP, about a minute)."""
+
+    listen: list[str] = Field(default_factory=lambda: ["tcp/127.0.0.1:0"], min_length=1)
+    key_prefix: str | None = None
+    spawn_agents: bool = True
+    reply_timeout_s: float = Field(1.0, gt=0.0, le=60.0)
+    start_timeout_s: float = Field(600.0, gt=0.0, le=3600.0)
+
+    @field_validator("listen")
+    @classmethod
+    def _endpoints(cls, endpoints: list[str]) -> list[str]:
+        for endpoint in endpoints:
+            if not _ENDPOINT.match(endpoint):
+                raise ValueError(f"{endpoint!r} is not a Zenoh endpoint like tcp/127.0.0.1:7447")
+        return endpoints
+
+    @field_validator("key_prefix")
+    @classmethod
+    def _prefix(cls, prefix: str | None) -> str | None:
+        if prefix is not None and not _PREFIX.match(prefix):
+            raise ValueError(f"{prefix!r} is not a key prefix like porter/team_a "
+                             "(letters, digits, _ and -, separated by /)")
+        return prefix
+
+
+def concrete_endpoint(endpoint: str) -> str:
+    """``endpoint`` with port 0 replaced by a free port of its address (tcp/udp only)."""
+    protocol, _, address = endpoint.partition("/")
+    host, _, port = address.rpartition(":")
+    if protocol not in ("tcp", "udp") or port != "0":
+        return endpoint
+    kind = socket.SOCK_STREAM if protocol == "tcp" else socket.SOCK_DGRAM
+    with socket.socket(socket.AF_INET, kind) as probe:
+        probe.bind((host, 0))
+        return f"{protocol}/{host}:{probe.getsockname()[1]}"
+
+
+def open_session(listen: list[str], connect: list[str]) -> zenoh.Session:
+    """A peer-mode session listening on ``listen`` and connecting to ``connect``."""
+    config = zenoh.Config()
+    config.insert_json5("mode", json.dumps("peer"))
+    config.insert_json5("listen/endpoints", json.dumps(listen))
+    config.insert_json5("connect/endpoints", json.dumps(connect))
+    config.insert_json5("scouting/multicast/enabled", "false")
+    return zenoh.open(config)
+
+
+def request_key(prefix: str, agent: int) -> str:
+    return f"{prefix}/agent/{agent}/request"
+
+
+def reply_key(prefix: str, agent: int | str) -> str:
+    return f"{prefix}/agent/{agent}/reply"
+
+
+def hello_key(prefix: str, agent: int | str) -> str:
+    return f"{prefix}/agent/{agent}/hello"

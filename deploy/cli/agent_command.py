@@ -1,0 +1,66 @@
+"""``porter agent``: serve one robot's ADMM local solves over Zenoh (see ``deploy.agents``)."""
+
+from __future__ import annotations
+
+import argparse
+import sys
+
+
+def add_agent_parser(commands: argparse._SubParsersAction) -> None:
+    agent = commands.add_parser(
+        "agent", help="serve one robot's ADMM local solves over Zenoh",
+        description="Build one robot's local NMPC problem and answer the coordinator's solve "
+                    "requests over Zenoh until it says stop. porter starts these itself for "
+                    "executor 'zenoh'; start them by hand to put agents on other machines "
+                    "(same scenario and --config as the coordinator, its endpoint and key "
+                    "prefix).")
+    source = agent.add_mutually_exclusive_group(required=True)
+    source.add_argument("--scenario", help="the scenario the coordinator runs (its settings)")
+    source.add_argument("--settings", help="effective NMPC settings YAML (as porter writes "
+                        "them for agents it starts); needs --agents")
+    agent.add_argument("--config", help="YAML overriding MpcSettings fields (with --scenario)")
+    agent.add_argument("--agents", type=int, help="team size (with --settings)")
+    agent.add_argument("--index", type=int, required=True, help="this agent's robot, from 0")
+    agent.add_argument("--team", help="team name in every message (default: the scenario's)")
+    agent.add_argument("--key-prefix", required=True,
+                       help="the coordinator's key prefix, e.g. porter/two_go2/4711")
+    agent.add_argument("--connect", nargs="+", default=[],
+                       help="the coordinator's Zenoh endpoints, e.g. tcp/127.0.0.1:7447")
+    agent.add_argument("--listen", nargs="+", default=[],
+                       help="endpoints this agent listens on (default: none)")
+    agent.add_argument("--parent-pid", type=int, help=argparse.SUPPRESS)
+    agent.set_defaults(handler=run_agent)
+
+
+def run_agent(args: argparse.Namespace) -> int:
+    from core.nmpc.admm_executor import LocalSolverSpec
+    from core.nmpc.settings import MpcSettings
+    from deploy.agents.agent import AdmmAgent, AgentAddress
+    from deploy.config.files import load_settings
+    from deploy.config.scenario import load_scenario
+    from deploy.runtime.codegen_cache import CompiledCodeCache
+
+    if args.scenario:
+        scenario = load_scenario(args.scenario)
+        base = load_settings(args.config, MpcSettings) if args.config else MpcSettings()
+        settings, agent_count = scenario.mpc_settings(base), len(scenario.team)
+        team = args.team or scenario.name
+    else:
+        if args.agents is None or args.agents < 1:
+            print("porter: agent --settings needs --agents N (N >= 1)", file=sys.stderr)
+            return 2
+        settings, agent_count = load_settings(args.settings, MpcSettings), args.agents
+        team = args.team or "porter"
+    if not 0 <= args.index < agent_count:
+        print(f"porter: agent --index must be in [0, {agent_count - 1}], got {args.index}",
+              file=sys.stderr)
+        return 2
+    spec = LocalSolverSpec(settings, agent_count, CompiledCodeCache())
+    agent = AdmmAgent(spec, AgentAddress(team, args.index, args.key_prefix, args.connect,
+                                         args.listen), parent_pid=args.parent_pid)
+    print(f"porter agent {args.index} of team {team!r}: problem {agent.digest}, serving on "
+          f"{args.key_prefix}", file=sys.stderr, flush=True)
+    agent.serve()
+    if agent.rejected:
+        print(f"porter agent {args.index}: dropped {dict(agent.rejected)}", file=sys.stderr)
+    return 0

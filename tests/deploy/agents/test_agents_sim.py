@@ -1,0 +1,81 @@
+"""The team in simulation with its ADMM agents on Zenoh: the same run as with the pipe
+executor, and agents started by hand on other loopback addresses carry the payload to the goal."""
+
+from __future__ import annotations
+
+import json
+import subprocess
+import sys
+from pathlib import Path
+
+import pytest
+
+from deploy.agents.zenoh_session import AgentNetwork, concrete_endpoint
+from deploy.cli.porter import main
+from deploy.config.scenario import load_scenario
+from deploy.runtime.codegen_cache import CompiledCodeCache
+from deploy.runtime.sim_run import SimRun
+
+ROOT = Path(__file__).resolve().parents[3]
+TIMING = ("_ms", "_s", "wall", "real_time_factor", "deadline_misses")
+
+
+def _untimed(summary: dict, prefix: str = "") -> dict:
+    flat: dict = {}
+    for key, value in summary.items():
+        if isinstance(value, dict):
+            flat |= _untimed(value, f"{prefix}{key}.")
+        elif not any(mark in prefix + key for mark in TIMING):
+            flat[prefix + key] = value
+    return flat
+
+
+def test_a_sim_over_zenoh_is_the_sim_over_pipes(tmp_path: Path) -> None:
+    summaries = {}
+    for executor in ("process", "zenoh"):
+        out = tmp_path / f"{executor}.json"
+        assert main(["sim", "two_go2", "--duration", "1.0", "--executor", executor,
+                     "--no-record", "--quiet", "--json", str(out)]) == 0
+        summaries[executor] = _untimed(json.loads(out.read_text()))
+    assert summaries["zenoh"] == summaries["process"]
+    assert summaries["zenoh"]["nmpc_updates"] > 0
+
+
+def test_serial_and_another_executor_contradict(capsys: pytest.CaptureFixture[str]) -> None:
+    assert main(["sim", "--serial", "--executor", "zenoh", "--no-record", "--quiet"]) == 2
+    assert "--serial and --executor zenoh contradict" in capsys.readouterr().err
+
+
+@pytest.mark.slow
+def test_agents_started_by_hand_on_other_addresses_carry_the_payload_to_the_goal() -> None:
+    endpoint = concrete_endpoint("tcp/127.0.0.1:0")
+    prefix = "porter/by_hand"
+    agents = [subprocess.Popen(
+        [sys.executable, "-m", "deploy.cli", "agent", "--scenario", "two_go2", "--index",
+         str(i), "--key-prefix", prefix, "--connect", endpoint, "--listen",
+         f"tcp/127.0.0.{2 + i}:0"], cwd=ROOT, stdout=subprocess.DEVNULL,
+        stderr=subprocess.PIPE) for i in range(2)]
+    scenario = load_scenario("two_go2")
+    network = AgentNetwork(listen=[endpoint], key_prefix=prefix, spawn_agents=False)
+    scenario = scenario.model_copy(update={"controller": scenario.controller.model_copy(
+        update={"executor": "zenoh", "network": network})})
+    try:
+        run = SimRun(scenario, CompiledCodeCache())
+        try:
+            executor = run.control.controller.executor
+            hosts = {h.agent: h.pid for h in executor.hellos.values()}
+            assert hosts == {i: agents[i].pid for i in range(2)}
+            summary = run.run()
+        finally:
+            run.close()
+    finally:
+        for agent in agents:  # the coordinator said stop when it closed
+            try:
+                agent.wait(timeout=10)
+            except subprocess.TimeoutExpired:
+                agent.kill()
+                agent.wait()
+    assert [agent.returncode for agent in agents] == [0, 0], [
+        a.stderr.read().decode()[-800:] for a in agents if a.stderr]
+    assert summary["reached_goal"] and summary["falls"] == 0, summary
+    assert summary["min_h_m"] >= -0.02

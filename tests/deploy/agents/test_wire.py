@@ -1,0 +1,99 @@
+"""ADMM messages on the wire: round trips keep every value, and whatever is malformed,
+foreign or for another problem is rejected with a reason before anything uses it."""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+import pytest
+
+from core.nmpc.admm_executor import LocalSolveRequest, LocalSolverSpec
+from core.nmpc.nlp_solver import NlpSolution, SolveStats
+from core.nmpc.settings import MpcSettings
+from deploy.agents import wire
+from deploy.agents.messages import admm_wire_pb2 as pb
+
+SIZES = wire.ProblemSizes(decision=7, parameters=5, constraints=3)
+TEAM, AGENTS, DIGEST = "team_a", 2, "abc123"
+
+
+def _request(**changes: object) -> LocalSolveRequest:
+    rng = np.random.default_rng(1)
+    fields: dict = dict(agent=1, initial_guess=rng.normal(size=7), parameters=rng.normal(size=5),
+                        lower_bounds=np.full(7, -np.inf), upper_bounds=rng.normal(size=7),
+                        constraint_multipliers=rng.normal(size=3),
+                        bound_multipliers=rng.normal(size=7), warm_start=True, update=12,
+                        iteration=1)
+    fields.update(changes)
+    return LocalSolveRequest(**fields)
+
+
+def _decode(data: bytes) -> LocalSolveRequest | None:
+    return wire.decode_request(data, TEAM, AGENTS, DIGEST, SIZES)[1]
+
+
+def test_a_request_round_trips_exactly() -> None:
+    request = _request()
+    sequence, decoded = wire.decode_request(wire.encode_request(request, TEAM, 41, DIGEST),
+                                            TEAM, AGENTS, DIGEST, SIZES)
+    assert sequence == 41 and decoded is not None
+    for name in ("initial_guess", "parameters", "lower_bounds", "upper_bounds",
+                 "constraint_multipliers", "bound_multipliers"):
+        np.testing.assert_array_equal(getattr(decoded, name), getattr(request, name))
+    assert (decoded.agent, decoded.update, decoded.iteration, decoded.warm_start) == (1, 12, 1, True)
+
+
+def test_a_cold_request_has_no_multipliers_and_a_stop_has_no_request() -> None:
+    cold = _decode(wire.encode_request(_request(constraint_multipliers=None,
+                                                bound_multipliers=None, warm_start=False),
+                                       TEAM, 1, DIGEST))
+    assert cold is not None and cold.constraint_multipliers is None and not cold.warm_start
+    assert _decode(wire.encode_stop(TEAM, 0)) is None
+
+
+def test_a_reply_round_trips_and_a_failed_one_may_carry_nan() -> None:
+    stats = SolveStats("Solve_Succeeded", True, 3, 0.004, 1.5, 1e-9, 0.003)
+    solution = NlpSolution(np.arange(7.0), np.arange(3.0), np.arange(7.0) * 2, stats)
+    agent, sequence, decoded = wire.decode_reply(
+        wire.encode_reply(solution, TEAM, 1, 9, _request()), TEAM, AGENTS, SIZES)
+    assert (agent, sequence) == (1, 9) and decoded.stats == stats
+    np.testing.assert_array_equal(decoded.decision, solution.decision)
+    failed = NlpSolution(np.full(7, np.nan), np.zeros(3), np.zeros(7),
+                         SolveStats("Infeasible", False, 50, 0.1, math.nan, math.inf))
+    _, _, decoded = wire.decode_reply(wire.encode_reply(failed, TEAM, 0, 9, _request(agent=0)),
+                                      TEAM, AGENTS, SIZES)
+    assert not decoded.stats.success and np.isnan(decoded.decision).all()
+    # a successful reply with a NaN is a corrupt message
+    corrupt = NlpSolution(np.full(7, np.nan), np.zeros(3), np.zeros(7), stats)
+    with pytest.raises(wire.WireError, match="decision is not finite"):
+        wire.decode_reply(wire.encode_reply(corrupt, TEAM, 0, 9, _request(agent=0)), TEAM,
+                          AGENTS, SIZES)
+
+
+@pytest.mark.parametrize(("data", "reason"), [
+    (b"\xff\xfe garbage", "not a SolveRequest"),
+    (wire.encode_request(_request(), "team_b", 1, DIGEST), "foreign team"),
+    (wire.encode_request(_request(agent=5), TEAM, 1, DIGEST), "agent 5 not in a team of 2"),
+    (wire.encode_request(_request(), TEAM, 1, "other"), "problem other"),
+    (wire.encode_request(_request(parameters=np.zeros(4)), TEAM, 1, DIGEST),
+     "parameters has 4 values, expected 5"),
+    (wire.encode_request(_request(initial_guess=np.full(7, np.inf)), TEAM, 1, DIGEST),
+     "initial guess is not finite"),
+    (pb.SolveRequest(wire_version=99, team=TEAM).SerializeToString(), "wire version 99"),
+])
+def test_malformed_foreign_and_other_problem_requests_are_rejected(data: bytes,
+                                                                   reason: str) -> None:
+    with pytest.raises(wire.WireError, match=reason):
+        _decode(data)
+
+
+def test_the_digest_names_the_problem() -> None:
+    base = MpcSettings()
+    changed = base.model_copy(update={"horizon_steps": 9})
+    assert wire.problem_digest(LocalSolverSpec(base, 2)) == wire.problem_digest(
+        LocalSolverSpec(MpcSettings(), 2))
+    assert wire.problem_digest(LocalSolverSpec(base, 2)) != wire.problem_digest(
+        LocalSolverSpec(base, 3))
+    assert wire.problem_digest(LocalSolverSpec(base, 2)) != wire.problem_digest(
+        LocalSolverSpec(changed, 2))

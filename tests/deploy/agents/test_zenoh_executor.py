@@ -1,0 +1,154 @@
+"""ADMM local solves on `porter agent` processes over Zenoh: the same plans as in this process,
+messages that are not for the team dropped and counted, agents that are missing, hold another
+problem or die reported, never hung on."""
+
+from __future__ import annotations
+
+import os
+import signal
+import threading
+import time
+from collections.abc import Iterator
+
+import numpy as np
+import pytest
+
+from core.model.team import TeamModel
+from core.nmpc.admm_executor import LocalSolverSpec
+from core.nmpc.admm_mpc import DistributedMpc
+from deploy.agents import wire
+from deploy.agents.zenoh_executor import ZenohExecutor
+from deploy.agents.zenoh_session import (
+    AgentNetwork,
+    concrete_endpoint,
+    hello_key,
+    open_session,
+    reply_key,
+)
+from deploy.config.scenario import load_scenario
+from deploy.runtime.codegen_cache import CompiledCodeCache
+from deploy.runtime.sim_run import SimRun
+from drivers.robot_descriptions import srb_parameters
+
+
+@pytest.fixture(scope="module")
+def run() -> Iterator[SimRun]:
+    scenario = load_scenario("two_go2")
+    scenario = scenario.model_copy(update={"controller": scenario.controller.model_copy(
+        update={"executor": "serial"})})
+    run = SimRun(scenario, CompiledCodeCache())
+    yield run
+    run.close()
+
+
+@pytest.fixture(scope="module")
+def executor(run: SimRun) -> Iterator[ZenohExecutor]:
+    spec = LocalSolverSpec(run.control.settings, 2, run.control.cache)
+    executor = ZenohExecutor(spec, AgentNetwork(reply_timeout_s=2.0), "two_go2")
+    yield executor
+    executor.close()
+
+
+def _inputs(run: SimRun, t: float = 0.0):  # noqa: ANN202
+    control = run.control
+    measurements = [run.links.drivers[name].read() for name in control.robot_names]
+    control.reset(measurements, start_s=0.0)
+    return control.nmpc_inputs(t, measurements, run.simulation.mocap().latest()).inputs
+
+
+def test_agents_over_zenoh_plan_what_this_process_plans(run: SimRun,
+                                                        executor: ZenohExecutor) -> None:
+    assert sorted(executor.hellos) == [0, 1]
+    assert all(h.problem_digest == executor.digest for h in executor.hellos.values())
+    team = TeamModel.from_settings(run.scenario.team_settings(), srb_parameters)
+    networked = DistributedMpc(team, run.control.settings, executor=executor)
+    inputs = _inputs(run)
+    remote = networked.update(inputs)
+    run.control.controller.reset()
+    local = run.control.controller.update(inputs)
+    assert remote.success and [s.status for s in remote.solves] == [
+        s.status for s in local.solves]
+    # The agents are fresh processes on this CPU's BLAS kernels, this process may have loaded
+    # CasADi's generic ones first: equal within the cold start's tolerance, not bit for bit.
+    np.testing.assert_allclose(remote.grf, local.grf, rtol=0, atol=1e-3)
+    np.testing.assert_allclose(remote.consensus_trajectory, local.consensus_trajectory,
+                               rtol=0, atol=1e-2)
+    second = networked.update(_inputs(run, 0.05))  # warm: the agents got multipliers
+    assert second.success and executor.late_replies == 0
+
+
+def test_messages_not_for_the_team_are_dropped_and_counted(run: SimRun,
+                                                           executor: ZenohExecutor) -> None:
+    before = sum(executor.rejected.values())
+    intruder = open_session([], executor.endpoints)
+    try:
+        time.sleep(0.5)  # let the sessions meet
+        intruder.put(reply_key(executor.key_prefix, 0), b"\x00garbage\xff")
+        intruder.put(hello_key(executor.key_prefix, 1), wire.encode_hello(
+            "another_team", 1, executor.digest, "elsewhere", 1, 0))
+        deadline = time.monotonic() + 5.0
+        while sum(executor.rejected.values()) < before + 2 and time.monotonic() < deadline:
+            time.sleep(0.05)
+    finally:
+        intruder.close()
+    assert sum(executor.rejected.values()) >= before + 2, executor.rejected
+    assert executor.hellos[1].team == "two_go2"  # the foreign hello changed nothing
+    team = TeamModel.from_settings(run.scenario.team_settings(), srb_parameters)
+    assert DistributedMpc(team, run.control.settings, executor=executor).update(
+        _inputs(run)).success
+
+
+def test_agents_that_never_come_are_reported(run: SimRun) -> None:
+    spec = LocalSolverSpec(run.control.settings, 2, run.control.cache)
+    network = AgentNetwork(spawn_agents=False, start_timeout_s=1.0, key_prefix="porter/nobody")
+    with pytest.raises(RuntimeError, match=r"agents \[0, 1\] did not announce themselves"):
+        ZenohExecutor(spec, network, "two_go2")
+
+
+def test_an_agent_holding_another_problem_is_refused(run: SimRun) -> None:
+    spec = LocalSolverSpec(run.control.settings, 2, run.control.cache)
+    endpoint = concrete_endpoint("tcp/127.0.0.1:0")
+    network = AgentNetwork(listen=[endpoint], spawn_agents=False, start_timeout_s=10.0,
+                           key_prefix="porter/mixed")
+    stop = threading.Event()
+
+    def stale_agents() -> None:  # hellos for another problem, as agents of an old config send
+        time.sleep(0.5)  # the coordinator listens by then
+        peer = open_session([], [endpoint])
+        try:
+            while not stop.is_set():
+                for agent in (0, 1):
+                    peer.put(hello_key("porter/mixed", agent), wire.encode_hello(
+                        "two_go2", agent, "0123456789abcdef", "elsewhere", 4711, 0))
+                stop.wait(0.2)
+        finally:
+            peer.close()
+
+    thread = threading.Thread(target=stale_agents, daemon=True)
+    thread.start()
+    try:
+        with pytest.raises(RuntimeError, match="holds problem 0123456789abcdef"):
+            ZenohExecutor(spec, network, "two_go2")
+    finally:
+        stop.set()
+        thread.join()
+
+
+def test_a_killed_agent_is_a_failed_solve_for_its_robot_only(run: SimRun) -> None:
+    spec = LocalSolverSpec(run.control.settings, 2, run.control.cache)
+    executor = ZenohExecutor(spec, AgentNetwork(reply_timeout_s=0.5), "two_go2")
+    try:
+        team = TeamModel.from_settings(run.scenario.team_settings(), srb_parameters)
+        mpc = DistributedMpc(team, run.control.settings, executor=executor)
+        assert mpc.update(_inputs(run)).success
+        os.kill(executor.hellos[1].pid, signal.SIGKILL)
+        time.sleep(0.2)
+        started = time.monotonic()
+        plan = mpc.update(_inputs(run, 0.05))
+        assert time.monotonic() - started < 0.5 * 2 + 1.0  # two ADMM rounds, then on
+        statuses = [s.status for s in plan.solves]
+        assert any("agent 1 did not answer within 0.5 s" in s for s in statuses), statuses
+        assert not any("agent 0" in s for s in statuses), statuses
+        assert not plan.success
+    finally:
+        executor.close()
