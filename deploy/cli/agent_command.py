@@ -64,3 +64,21 @@ def run_agent(args: argparse.Namespace) -> int:
     if agent.rejected:
         print(f"porter agent {args.index}: dropped {dict(agent.rejected)}", file=sys.stderr)
     return 0
+
+
+def add_bench_agents_parser(bench_kinds: argparse._SubParsersAction) -> None:
+    agents = bench_kinds.add_parser("agents", help="ADMM messages over Zenoh vs the pipe "
+                                    "executor: round trips and closed-loop updates")
+    agents.add_argument("scenario", nargs="?", default="two_go2")
+    agents.add_argument("--messages", type=int, default=500, help="round trips per transport")
+    agents.add_argument("--duration", type=float, default=3.0,
+                        help="closed-loop seconds per run")
+    agents.add_argument("--repeats", type=int, default=2, help="runs per executor")
+    agents.add_argument("--json", help="also write the figures as JSON")
+    agents.set_defaults(handler=_bench_agents)
+
+
+def _bench_agents(args: argparse.Namespace) -> int:
+    from deploy.bench.agents import run_bench
+
+    return run_bench(args)

@@ -9,7 +9,7 @@ import sys
 from pathlib import Path
 from typing import TYPE_CHECKING
 
-from deploy.cli.agent_command import add_agent_parser
+from deploy.cli.agent_command import add_agent_parser, add_bench_agents_parser
 
 if TYPE_CHECKING:
     from core.nmpc.settings import MpcSettings
@@ -218,6 +218,7 @@ def build_parser() -> argparse.ArgumentParser:
 
     bench = commands.add_parser("bench", help="benchmarks that print tables")
     bench_kinds = bench.add_subparsers(dest="bench", required=True)
+    add_bench_agents_parser(bench_kinds)
     nmpc = bench_kinds.add_parser("nmpc", help="centralized vs ADMM NMPC update times")
     nmpc.add_argument("--agents", type=count, nargs="+", default=[2, 3, 4])
     nmpc.add_argument("--solvers", nargs="+", default=["fatrop", "rti"],
@@ -239,7 +240,8 @@ def build_parser() -> argparse.ArgumentParser:
     bench_sim.add_argument("scenarios", nargs="*", help="scenario names (default: all shipped)")
     bench_sim.add_argument("--duration", type=positive_number, default=5.0,
                            help="simulated seconds per scenario")
-    bench_sim.add_argument("--executor", default="process", choices=["process", "serial"])
+    bench_sim.add_argument("--executor", default="process",
+                           choices=["process", "serial", "zenoh"])
     bench_sim.add_argument("--json", help="also write the rows as JSON {rows: [...]}")
     bench_sim.add_argument("--config", help="YAML file overriding MpcSettings fields")
     bench_sim.set_defaults(handler=_bench_sim)
