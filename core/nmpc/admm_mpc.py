@@ -18,6 +18,7 @@ import time
 
 import numpy as np
 
+from core.communication.lossy_channel import LossyChannel
 from core.model.srb_model import STATE_SIZE, WRENCH_SIZE
 from core.model.team import TeamModel
 from core.nmpc.admm_executor import (
@@ -49,6 +50,9 @@ class DistributedMpc:
         self.problem = build_transport_problem(settings, team.agent_count, local=True)
         self.weights = self.problem.consensus_weights()
         self._updates = 0  # MPC updates so far (numbers the local-solve requests)
+        channel = settings.admm.channel
+        self.channel = (None if channel.perfect
+                        else LossyChannel(channel, team.agent_count, self._shift_shared))
         self._payload_size = settings.horizon_steps * STATE_SIZE
         self.executor = executor or SerialExecutor(
             LocalSolverSpec(settings, team.agent_count, compiler)
@@ -59,6 +63,8 @@ class DistributedMpc:
         self._previous: list[NlpSolution | None] = [None] * self.team.agent_count
         self._consensus: np.ndarray | None = None
         self._duals = np.zeros((self.team.agent_count, self.weights.size))
+        if self.channel is not None:
+            self.channel.reset()
 
     def close(self) -> None:
         self.executor.close()
@@ -132,8 +138,15 @@ class DistributedMpc:
                          else _fallback(result, request.initial_guess)
                          for result, request in zip(results, requests, strict=True)]
             shared = np.array([self.problem.shared_trajectory(s.decision) for s in solutions])
-            new_consensus = np.mean(shared + duals, axis=0)
-            duals = duals + shared - new_consensus
+            # Through the network (ChannelSettings): the coordinator's consensus and duals see
+            # what arrived (held last); the residuals recorded are the agents' true gaps.
+            received, fresh = ((shared, np.ones(na, dtype=bool)) if self.channel is None
+                               else self.channel.exchange(shared, self._updates))
+            if fresh.any():
+                new_consensus = np.mean((received + duals)[fresh], axis=0)
+                duals[fresh] = duals[fresh] + received[fresh] - new_consensus
+            else:
+                new_consensus = consensus
             records.append(self._residuals(shared - new_consensus,
                                            new_consensus - consensus, results))
             consensus = new_consensus

@@ -95,12 +95,33 @@ class ContactSettings(StrictModel):
     max_normal_force_n: float = Field(250.0, gt=0)
 
 
+class ChannelSettings(StrictModel):
+    """The agents' messages to the consensus as a lossy network delivers them (the paper's
+    study: delays of up to 20 communication rounds, drop probability 0.5, hold-last).
+
+    Each ADMM round an agent's shared trajectory s^i is dropped with ``drop_probability``
+    or arrives after a delay drawn uniformly from 0..``max_delay_rounds`` rounds (one round
+    = one ADMM iteration); the receiver holds the newest one that arrived, shifted one stage
+    per MPC update since it was sent. The default (0, 0) is a perfect network. ``seed``
+    makes a run repeatable."""
+
+    max_delay_rounds: int = Field(0, ge=0, le=1000)
+    drop_probability: float = Field(0.0, ge=0.0, lt=1.0)
+    seed: int = Field(0, ge=0)
+    max_age_rounds: int | None = Field(2, ge=0)
+
+    @property
+    def perfect(self) -> bool:
+        return self.max_delay_rounds == 0 and self.drop_probability == 0.0
+
+
 class AdmmSettings(StrictModel):
     """ADMM consensus over payload-state and wrench trajectories."""
 
     iterations: int = Field(2, ge=1)
     rho_state: float = Field(1e4, ge=0)
     rho_wrench: float = Field(1e3, gt=0)
+    channel: ChannelSettings = ChannelSettings()
 
 
 class BrakingSettings(StrictModel):

@@ -10,6 +10,7 @@ from pathlib import Path
 from typing import TYPE_CHECKING
 
 from deploy.cli.agent_command import add_agent_parser, add_bench_agents_parser
+from deploy.cli.sim_arguments import add_sim_parser
 
 if TYPE_CHECKING:
     from core.nmpc.settings import MpcSettings
@@ -296,32 +297,7 @@ def build_parser() -> argparse.ArgumentParser:
     bench_wbc.add_argument("--json", help="also write the rows as JSON {rows: [...]}")
     bench_wbc.set_defaults(handler=_bench_wbc)
 
-    sim = commands.add_parser("sim", help="run a scenario on the embedded MuJoCo backend")
-    sim.add_argument("scenario", nargs="?", default="two_go2",
-                     help="shipped scenario name or path of a scenario YAML (default two_go2)")
-    sim.add_argument("--json", help="write the summary metrics as JSON")
-    sim.add_argument("--config", help="YAML file overriding MpcSettings fields")
-    sim.add_argument("--duration", type=positive_number,
-                     help="override the scenario's duration_s")
-    sim.add_argument("--seed", type=int, help="override the scenario's seed")
-    sim.add_argument("--mode", choices=["distributed", "centralized", "wrench-only"],
-                     help="override the scenario's controller.mode")
-    sim.add_argument("--serial", action="store_true",
-                     help="run ADMM local solves in this process instead of one per agent")
-    sim.add_argument("--executor", choices=["process", "serial", "zenoh"],
-                     help="where ADMM local solves run (zenoh: `porter agent` processes)")
-    sim.add_argument("--delay", action="store_true",
-                     help="model computation delay (apply each plan after its solve time)")
-    sim.add_argument("--quiet", action="store_true", help="no progress bar")
-    sim.add_argument("--record", metavar="LOG.mcap",
-                     help="flight-recorder file (default runs/<scenario>-<time>.mcap)")
-    sim.add_argument("--no-record", action="store_true", help="do not write a flight log")
-    sim.add_argument("--keyframe-every", type=count, metavar="N",
-                     help="log the NMPC warm start every N updates (default 60)")
-    sim.add_argument("--rerun", nargs="?", const="spawn", metavar="TARGET",
-                     help="stream live to Rerun: spawn a viewer (default), 'connect' to a "
-                          "running one (or a rerun+http:// URL), or a FILE.rrd")
-    sim.set_defaults(handler=_sim)
+    add_sim_parser(commands, _sim, positive_number, count)
 
     deploy = commands.add_parser("deploy", help="run the team on robots (or on the simulated "
                                  "world behind the same drivers)")

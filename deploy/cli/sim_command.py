@@ -8,7 +8,9 @@ import json
 import sys
 from pathlib import Path
 
-from core.nmpc.settings import MpcSettings
+from pydantic import ValidationError
+
+from core.nmpc.settings import ChannelSettings, MpcSettings
 from deploy.config.files import ConfigError
 from deploy.config.scenario import Scenario, load_scenario
 from deploy.recording.flight_recorder import FlightRecorder, RecorderSettings
@@ -37,6 +39,18 @@ def scenario_from_args(args: argparse.Namespace) -> Scenario:
         controller["executor"] = executor or "serial"
     if args.delay:
         controller["model_computation_delay"] = True
+    channel = {key: value for key, value in (
+        ("max_delay_rounds", getattr(args, "channel_delay_rounds", None)),
+        ("drop_probability", getattr(args, "channel_drop", None))) if value is not None}
+    if channel:
+        current = scenario.controller.channel
+        try:
+            controller["channel"] = ChannelSettings.model_validate(
+                {**current.model_dump(include=current.model_fields_set), **channel})
+        except ValidationError as error:
+            detail = error.errors()[0]
+            raise ConfigError(f"--channel: {detail['loc'][0]}: {detail['msg']} (allowed: "
+                              "delay 0 to 1000 rounds, drop probability in [0, 1))") from None
     if controller:
         update["controller"] = scenario.controller.model_copy(update=controller)
     return scenario.model_copy(update=update)

@@ -26,7 +26,7 @@ from core.model.obstacles import Obstacle
 from core.model.strict_model import StrictModel
 from core.model.team_settings import AgentSettings, PayloadSettings, TeamSettings
 from core.nmpc.reference import WaypointReference
-from core.nmpc.settings import MpcSettings, SafetySettings
+from core.nmpc.settings import ChannelSettings, MpcSettings, SafetySettings
 from deploy.agents.zenoh_session import AgentNetwork
 from deploy.config.files import ConfigError, load_settings
 
@@ -121,6 +121,8 @@ class ControllerSpec(StrictModel):
     # or ``porter agent`` processes over Zenoh (``network``: where they meet).
     executor: Literal["process", "serial", "zenoh"] = "process"
     network: AgentNetwork = AgentNetwork()
+    # ADMM messages through a lossy network (``admm.channel``; default: a perfect one)
+    channel: ChannelSettings = ChannelSettings()
     # Simulation only: a plan takes effect when its computation would have finished: after
     # its measured update time, or after ``computation_delay_s`` when set (deterministic).
     model_computation_delay: bool = False
@@ -256,7 +258,7 @@ class Scenario(StrictModel):
             field: _one_value(f"admm.{field}", base.admm, field, base_source,
                               f"controller.{spec}", control, spec, self.name)
             for field, spec in (("iterations", "admm_iterations"), ("rho_state", "rho_state"),
-                                ("rho_wrench", "rho_wrench"))
+                                ("rho_wrench", "rho_wrench"), ("channel", "channel"))
         }
         distance = _one_value("safety.safety_distance_m", base.safety, "safety_distance_m",
                               base_source, "safety_distance_m", self, "safety_distance_m",
