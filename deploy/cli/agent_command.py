@@ -82,3 +82,32 @@ def _bench_agents(args: argparse.Namespace) -> int:
     from deploy.bench.agents import run_bench
 
     return run_bench(args)
+
+
+PAPER_CLAIMS = ("delay", "iterations", "consensus")
+
+
+def add_paper_parser(commands: argparse._SubParsersAction) -> None:
+    paper = commands.add_parser(
+        "paper", help="reproduce one of the paper's ablations beside its figures",
+        description="Run the variants of one of the paper's claims on the MuJoCo backend and "
+                    "print porter's figures beside the paper's; writes CLAIM.json and "
+                    "CLAIM.png (the ablation figure's panels) into --out.")
+    paper.add_argument("claim", choices=PAPER_CLAIMS)
+    paper.add_argument("--scenario", default="two_go2")
+    paper.add_argument("--duration", type=float, help="seconds per run (default: the "
+                       "scenario's)")
+    paper.add_argument("--out", default="paper", help="folder for the JSON and PNG")
+    paper.set_defaults(handler=_paper)
+
+
+def _paper(args: argparse.Namespace) -> int:
+    from pathlib import Path
+
+    from deploy.paper.reproduce import reproduce
+
+    if args.duration is not None and not args.duration > 0:
+        print(f"porter: paper --duration must be positive, got {args.duration}",
+              file=sys.stderr)
+        return 2
+    return reproduce(args.claim, args.scenario, args.duration, Path(args.out))

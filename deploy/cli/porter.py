@@ -9,7 +9,11 @@ import sys
 from pathlib import Path
 from typing import TYPE_CHECKING
 
-from deploy.cli.agent_command import add_agent_parser, add_bench_agents_parser
+from deploy.cli.agent_command import (
+    add_agent_parser,
+    add_bench_agents_parser,
+    add_paper_parser,
+)
 from deploy.cli.sim_arguments import add_sim_parser
 
 if TYPE_CHECKING:
@@ -346,6 +350,7 @@ def build_parser() -> argparse.ArgumentParser:
                               "replaying: review and commit the result deliberately")
     regress.set_defaults(handler=_regress)
     add_agent_parser(commands)
+    add_paper_parser(commands)
     return parser
 
 

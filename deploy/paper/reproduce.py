@@ -1,0 +1,123 @@
+"""``porter paper CLAIM``: run a claim's variants on the MuJoCo backend and print porter's
+figures beside the paper's; write them as JSON and the paper's ablation plot as a PNG."""
+
+from __future__ import annotations
+
+import json
+import math
+from pathlib import Path
+
+import numpy as np
+
+from core.nmpc.settings import MpcSettings
+from deploy.config.scenario import Scenario, load_scenario
+from deploy.paper.claims import CLAIMS, Claim, Variant
+from deploy.runtime.codegen_cache import CompiledCodeCache
+from deploy.runtime.sim_run import SimRun
+
+
+def variant_scenario(scenario: Scenario, variant: Variant, executor: str) -> Scenario:
+    controller = scenario.controller.model_copy(update={**variant.controller,
+                                                        "executor": executor})
+    return scenario.model_copy(update={"controller": controller})
+
+
+def variant_settings(base: MpcSettings, variant: Variant) -> MpcSettings:
+    if variant.coupling_enabled:
+        return base
+    return base.model_copy(update={"coupling": base.coupling.model_copy(
+        update={"enabled": False})})
+
+
+def lookup(summary: dict, dotted: str) -> float:
+    value: object = summary
+    for key in dotted.split("."):
+        value = value[key]  # type: ignore[index]
+    return float(value)  # type: ignore[arg-type]
+
+
+def run_claim(claim: Claim, scenario_name: str, duration_s: float | None,
+              executor: str = "serial", cache: CompiledCodeCache | None = None
+              ) -> list[dict]:
+    """One row per variant: its metrics, the paper's, the safety outcome and the series."""
+    cache = cache or CompiledCodeCache()
+    scenario = load_scenario(scenario_name)
+    if duration_s is not None:
+        scenario = scenario.model_copy(update={"duration_s": min(duration_s,
+                                                                 scenario.duration_s)})
+    rows = []
+    for variant in claim.variants:
+        run = SimRun(variant_scenario(scenario, variant, executor), cache,
+                     variant_settings(MpcSettings(), variant))
+        try:
+            summary = run.run()
+        finally:
+            run.close()
+        series = {name: list(map(float, getattr(run.metrics, name))) for name in claim.series}
+        rows.append({"variant": variant.label,
+                     "metrics": {m: lookup(summary, m) for m in claim.metrics},
+                     "paper": dict(variant.paper), "falls": summary["falls"],
+                     "reached_goal": summary["reached_goal"], "min_h_m": summary["min_h_m"],
+                     "duration_s": summary["duration_s"], "series": series})
+    return rows
+
+
+def format_rows(claim: Claim, rows: list[dict]) -> str:
+    short = {m: m.split(".")[-1] for m in claim.metrics}
+    header = f"{'variant':<38}" + "".join(
+        f"{short[m] + ' porter':>24}{'paper':>10}" for m in claim.metrics) + (
+        f"{'falls':>6}{'goal':>6}{'min h m':>9}")
+    lines = [f"porter paper {claim.name}: {claim.statement}", header, "-" * len(header)]
+    for row in rows:
+        cells = "".join(
+            f"{row['metrics'][m]:>24.3g}"
+            + (f"{row['paper'][m]:>10.3g}" if m in row["paper"] else f"{'-':>10}")
+            for m in claim.metrics)
+        lines.append(f"{row['variant']:<38}{cells}{row['falls']:>6}"
+                     f"{'yes' if row['reached_goal'] else 'no':>6}{row['min_h_m']:>9.3f}")
+    return "\n".join(lines)
+
+
+def plot(claim: Claim, rows: list[dict], path: Path) -> None:
+    """The paper's ablation panels: each series over time, one line per variant."""
+    import matplotlib
+
+    matplotlib.use("Agg")  # files only, no display
+    import matplotlib.pyplot as plt
+
+    figure, axes = plt.subplots(1, len(claim.series), figsize=(6 * len(claim.series), 3.6),
+                                squeeze=False)
+    for axis, name in zip(axes[0], claim.series, strict=True):
+        for row in rows:
+            values = np.asarray(row["series"][name])
+            if name == "yaw_error_rad":
+                values = np.abs(values)
+            time_s = np.linspace(0.0, row["duration_s"], len(values))
+            axis.plot(time_s, values, label=row["variant"], linewidth=1.0)
+        axis.set_xlabel("time [s]")
+        axis.set_ylabel(name.replace("_", " "))
+        if name != "yaw_error_rad":
+            axis.set_yscale("log")
+        axis.grid(True, alpha=0.3)
+        axis.legend(fontsize=8)
+    figure.suptitle(f"porter paper {claim.name}")
+    figure.tight_layout()
+    figure.savefig(path, dpi=110)
+    plt.close(figure)
+
+
+def reproduce(name: str, scenario: str, duration_s: float | None, out: Path,
+              executor: str = "serial") -> int:
+    claim = CLAIMS[name]
+    rows = run_claim(claim, scenario, duration_s, executor)
+    print(format_rows(claim, rows))
+    out.mkdir(parents=True, exist_ok=True)
+    plot(claim, rows, out / f"{name}.png")
+    table = [{k: v for k, v in row.items() if k != "series"} for row in rows]
+    (out / f"{name}.json").write_text(json.dumps({
+        "claim": name, "statement": claim.statement, "scenario": scenario, "rows": table,
+        "series": {row["variant"]: row["series"] for row in rows}},
+        indent=2, default=lambda v: None if isinstance(v, float) and math.isnan(v) else v)
+        + "\n")
+    print(f"wrote {out / (name + '.json')} and {out / (name + '.png')}")
+    return 0

@@ -1,0 +1,48 @@
+"""``porter paper``: each claim's variants run, porter's figures stand beside the paper's,
+and the JSON and the PNG are written (the figures themselves are README's, from full runs)."""
+
+from __future__ import annotations
+
+import json
+import math
+from pathlib import Path
+
+import pytest
+
+from deploy.cli.porter import main
+from deploy.paper.claims import CLAIMS
+
+
+def test_every_claim_names_the_papers_figures_and_differs_only_in_its_subject() -> None:
+    assert set(CLAIMS) == {"delay", "iterations", "consensus"}
+    for claim in CLAIMS.values():
+        assert len(claim.variants) >= 3 and claim.metrics and claim.series
+        assert any(v.paper for v in claim.variants)
+        for variant in claim.variants:
+            assert set(variant.paper) <= set(claim.metrics)
+    iterations = [v.controller["admm_iterations"] for v in CLAIMS["iterations"].variants]
+    assert iterations == [1, 2, 3, 6]
+
+
+def test_porter_paper_delay_runs_its_variants_and_writes_json_and_png(
+        tmp_path: Path, capsys: pytest.CaptureFixture[str]) -> None:
+    assert main(["paper", "delay", "--duration", "0.5", "--out", str(tmp_path)]) == 0
+    printed = capsys.readouterr().out
+    assert "6.97e-05" in printed and "5.93" in printed  # the paper's figures beside
+    result = json.loads((tmp_path / "delay.json").read_text())
+    rows = {row["variant"]: row for row in result["rows"]}
+    assert list(rows) == [v.label for v in CLAIMS["delay"].variants]
+    for row in rows.values():
+        assert all(math.isfinite(value) and value >= 0 for value in row["metrics"].values())
+    # the delayed runs disagree more than the nominal one, from the first half second on
+    nominal = rows["nominal"]["metrics"]["admm_residual_rms.force_n"]
+    assert rows["delayed, fresh <= 2 rounds (porter)"]["metrics"][
+        "admm_residual_rms.force_n"] > nominal
+    assert len(result["series"]["nominal"]["force_residual_n"]) >= 25  # 60 Hz for 0.5 s
+    png = (tmp_path / "delay.png").read_bytes()
+    assert png.startswith(b"\x89PNG") and len(png) > 10_000
+
+
+def test_a_bad_duration_is_refused(capsys: pytest.CaptureFixture[str]) -> None:
+    assert main(["paper", "delay", "--duration", "-1"]) == 2
+    assert "must be positive" in capsys.readouterr().err
