@@ -115,11 +115,12 @@ class RatesConfig(StrictModel):
 class NmpcRunConfig(StrictModel):
     """Where the NMPC runs. ``runner``: ``process``, a process of its own (off the loop's
     interpreter lock), or ``thread``, a thread of the loop's process. ``executor``: the ADMM
-    local solves ``serial`` in the NMPC's process or one ``process`` per agent; None keeps
+    local solves ``serial`` in the NMPC's process, one ``process`` per agent, or ``zenoh``:
+    ``porter agent`` processes over Zenoh (the scenario's ``controller.network``); None keeps
     the scenario's ``controller.executor`` (a different explicit value there is an error)."""
 
     runner: Literal["process", "thread"] = "process"
-    executor: Literal["serial", "process"] | None = None
+    executor: Literal["serial", "process", "zenoh"] | None = None
 
 
 class PreflightConfig(StrictModel):

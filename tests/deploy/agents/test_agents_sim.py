@@ -105,3 +105,24 @@ def test_a_team_with_delayed_and_lost_admm_messages_reaches_the_goal(tmp_path: P
     assert summary["min_h_m"] >= -0.02
     # delays degrade the consensus: larger residuals than a perfect network's (~0.8 N)
     assert summary["admm_residual_rms"]["force_n"] > 1.0
+
+
+@pytest.mark.slow
+def test_porter_deploy_runs_its_admm_agents_over_zenoh(tmp_path: Path) -> None:
+    import yaml
+
+    from deploy.config.deploy_config import CONFIG_DIR
+    from deploy.recording.log_reader import LogFile
+
+    data = yaml.safe_load((CONFIG_DIR / "two_go2.yaml").read_text())
+    data["nmpc"] = {**data["nmpc"], "executor": "zenoh"}
+    config = tmp_path / "deploy.yaml"
+    config.write_text(yaml.safe_dump(data))
+    log_path = tmp_path / "run.mcap"
+    assert main(["deploy", "--config", str(config), "--backend", "sim", "--yes",
+                 "--duration", "2", "--record", str(log_path)]) == 0
+    summary = LogFile(log_path).summary()
+    assert summary is not None and summary["final_state"] == "DONE"
+    assert summary["nmpc_failed_updates"] == 0 and summary["nmpc_updates"] > 60
+    as_run = yaml.safe_load(LogFile(log_path).attachment_text("deploy_config.yaml"))
+    assert as_run["nmpc"]["executor"] == "zenoh"
