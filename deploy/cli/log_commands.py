@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import argparse
+import json
 import sys
 from pathlib import Path
 
@@ -46,9 +47,27 @@ def describe(log: LogFile) -> str:
     return "\n".join(lines)
 
 
+def info_record(log: LogFile) -> dict:
+    """``porter log info --json``: ``{path, size_bytes, duration_s, messages, topics:
+    {topic: {messages, rate_hz}}, metadata: {name: {key: value}}, attachments: [names],
+    summary: the run's summary metrics or null}`` (JSON types only)."""
+    counts, start_ns, end_ns = log.message_counts()
+    duration_s = (end_ns - start_ns) * 1e-9
+    return {"path": str(log.path), "size_bytes": log.path.stat().st_size,
+            "duration_s": duration_s, "messages": sum(counts.values()),
+            "topics": {topic: {"messages": n, "rate_hz": n / duration_s if duration_s > 0
+                               else 0.0} for topic, n in sorted(counts.items())},
+            "metadata": log.metadata(), "attachments": sorted(log.attachments()),
+            "summary": log.summary()}
+
+
 def run_log_info(args: argparse.Namespace) -> int:
     try:
-        print(describe(LogFile(args.log)))
+        log = LogFile(args.log)
+        if getattr(args, "json", False):
+            print(json.dumps(info_record(log), indent=2, default=str))
+        else:
+            print(describe(log))
     except LogError as error:
         print(f"porter: {error}", file=sys.stderr)
         return 2

@@ -4,6 +4,7 @@ from __future__ import annotations
 
 import argparse
 import math
+import os
 import signal
 import sys
 from pathlib import Path
@@ -209,7 +210,10 @@ def _regress(args: argparse.Namespace) -> int:
 
 
 def build_parser() -> argparse.ArgumentParser:
-    parser = argparse.ArgumentParser(prog="porter", description=__doc__)
+    parser = argparse.ArgumentParser(
+        prog="porter", description="Quadruped teams carrying one payload: simulate, deploy, "
+        "replay and check runs.")
+    parser.add_argument("--version", action="version", version=f"porter {_porter_version()}")
     commands = parser.add_subparsers(dest="command", required=True)
 
     drill = commands.add_parser("drill", help="the fault suite on the sim backend: every fault "
@@ -332,6 +336,9 @@ def build_parser() -> argparse.ArgumentParser:
     log_kinds = log.add_subparsers(dest="log_command", required=True)
     info = log_kinds.add_parser("info", help="duration, topics, counts, summary metrics")
     info.add_argument("log", help="LOG.mcap")
+    info.add_argument("--json", action="store_true", help="print it as one JSON document "
+                      "(path, size_bytes, duration_s, messages, topics, metadata, attachments, "
+                      "summary)")
     info.set_defaults(handler=_log_info)
     recover = log_kinds.add_parser("recover", help="make a killed run's log readable")
     recover.add_argument("log", help="LOG.mcap left by a run that did not close it")
@@ -354,6 +361,15 @@ def build_parser() -> argparse.ArgumentParser:
     return parser
 
 
+def _porter_version() -> str:
+    from importlib.metadata import PackageNotFoundError, version
+
+    try:
+        return version("porter")
+    except PackageNotFoundError:
+        return "unknown (not installed)"
+
+
 def _terminate(signum: int, frame: object) -> None:
     raise KeyboardInterrupt(f"signal {signum}")
 
@@ -372,6 +388,12 @@ def main(argv: list[str] | None = None) -> int:
     except KeyboardInterrupt:
         print("porter: interrupted", file=sys.stderr)
         return 130
+    except BrokenPipeError:
+        # The reader went away (`porter log info LOG | head`): what it wanted was printed.
+        # Point stdout at /dev/null so the interpreter's final flush does not fail again.
+        devnull = os.open(os.devnull, os.O_WRONLY)
+        os.dup2(devnull, sys.stdout.fileno())
+        return 0
 
 
 if __name__ == "__main__":

@@ -1,0 +1,46 @@
+"""The command line behaves: a version, JSON for scripts, quiet exits on closed pipes."""
+
+from __future__ import annotations
+
+import json
+import os
+import subprocess
+import sys
+from importlib.metadata import version
+from pathlib import Path
+
+import pytest
+
+from deploy.cli.porter import main
+
+ROOT = Path(__file__).resolve().parents[3]
+LOG = ROOT / "logs" / "two_go2.mcap"
+
+
+def test_version(capsys: pytest.CaptureFixture[str]) -> None:
+    with pytest.raises(SystemExit) as done:
+        main(["--version"])
+    assert done.value.code == 0
+    assert capsys.readouterr().out.strip() == f"porter {version('porter')}"
+
+
+def test_log_info_json_is_one_document_of_the_log(capsys: pytest.CaptureFixture[str]) -> None:
+    assert main(["log", "info", str(LOG), "--json"]) == 0
+    record = json.loads(capsys.readouterr().out)
+    assert record["path"] == str(LOG) and record["messages"] > 1000
+    assert record["topics"]["/nmpc/update"]["messages"] == 90
+    assert record["metadata"]["porter"]["scenario"] == "two_go2"
+    assert record["summary"]["falls"] == 0 and "mpc_settings.yaml" in record["attachments"]
+
+
+def test_a_closed_pipe_ends_porter_quietly() -> None:
+    read_end, write_end = os.pipe()
+    os.close(read_end)  # the reader is gone before porter writes, as `| head` after its lines
+    try:
+        done = subprocess.run([sys.executable, "-m", "deploy.cli", "log", "info", str(LOG),
+                               "--json"], cwd=ROOT, stdout=write_end, stderr=subprocess.PIPE,
+                              text=True, timeout=120, check=False)
+    finally:
+        os.close(write_end)
+    assert done.returncode == 0, done.stderr
+    assert "Traceback" not in done.stderr and "BrokenPipeError" not in done.stderr
