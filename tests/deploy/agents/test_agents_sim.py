@@ -6,6 +6,7 @@ from __future__ import annotations
 import json
 import subprocess
 import sys
+import time
 from pathlib import Path
 
 import pytest
@@ -126,3 +127,40 @@ def test_porter_deploy_runs_its_admm_agents_over_zenoh(tmp_path: Path) -> None:
     assert summary["nmpc_failed_updates"] == 0 and summary["nmpc_updates"] > 60
     as_run = yaml.safe_load(LogFile(log_path).attachment_text("deploy_config.yaml"))
     assert as_run["nmpc"]["executor"] == "zenoh"
+
+
+def test_a_killed_agent_mid_run_ends_in_the_supervisors_safe_stop() -> None:
+    """The rule for a silent agent: its robot's solve fails each round, the loop holds the
+    last plan, and more than ``max_consecutive_solver_failures`` failed updates trip a safe
+    stop (damping) instead of carrying on with one robot unplanned."""
+    import os
+    import signal
+    import threading
+
+    scenario = load_scenario("two_go2").model_copy(update={"duration_s": 6.0})
+    network = AgentNetwork(reply_timeout_s=0.2)
+    scenario = scenario.model_copy(update={"controller": scenario.controller.model_copy(
+        update={"executor": "zenoh", "network": network})})
+    run = SimRun(scenario, CompiledCodeCache())
+    try:
+        executor = run.control.controller.executor
+        victim = executor.hellos[1].pid
+
+        def kill_when_walking() -> None:
+            while executor.hellos[1].solved < 60:  # about half a simulated second of updates
+                time.sleep(0.05)
+            os.kill(victim, signal.SIGKILL)
+
+        killer = threading.Thread(target=kill_when_walking, daemon=True)
+        killer.start()
+        summary = run.run()
+        killer.join(timeout=5)
+    finally:
+        run.close()
+    safety = summary["safety"]
+    assert safety["safe_stop"] is not None and "NMPC solver failed" in safety["safe_stop"], safety
+    # max 3 consecutive failed updates: the 4th trips; only agent 1's solves failed, one per
+    # ADMM round (two per update)
+    assert safety["nmpc_failed_updates"] == 4 and summary["failed_solves"] == 8
+    assert [t.split(" -> ")[1].split(":")[0] for t in safety["transitions"][1:]] == [
+        "SAFE_STOP", "DONE"]
