@@ -139,11 +139,13 @@ def _with_solver(base: MpcSettings | None, name: str, compiled: bool) -> MpcSett
 
 def run_bench(agent_counts: list[int], solvers: list[str], duration_s: float, parallel: bool,
               include_reference: bool, compiled: bool = True, log=print,
-              base_settings: MpcSettings | None = None
+              base_settings: MpcSettings | None = None,
+              reference_modes: tuple[str, ...] = ("distributed",), with_checks: bool = True
               ) -> tuple[list[BenchRow], list[AccuracyCheck], list[RtiFidelity]]:
     """Per team size: centralized and distributed rows of every solver, today's fatrop path
-    (CasADi's generic BLASFEO, process executor) and ipopt-reference, in this one run; for
-    ``rti``, its closed-loop distance from converged solves at the first team size."""
+    (CasADi's generic BLASFEO, process executor) and ipopt-reference (in
+    ``reference_modes``), in this one run; for ``rti``, its closed-loop distance from
+    converged solves at the first team size (``with_checks``: the accuracy and rti checks)."""
     rows = []
     checks = []
     fidelity = []
@@ -161,7 +163,7 @@ def run_bench(agent_counts: list[int], solvers: list[str], duration_s: float, pa
             # Today's fatrop path in the same run: workers on CasADi's generic BLASFEO.
             configs.append(("distributed", "fatrop", CompiledCodeCache(blas_target="generic")))
         if include_reference:
-            configs.append(("distributed", "ipopt-reference", cache))
+            configs += [(mode, "ipopt-reference", cache) for mode in reference_modes]
         for mode, name, row_cache in configs:
             settings = _with_solver(base_settings, name, compiled)
             label = name if row_cache is cache else f"{name}{GENERIC_SUFFIX}"
@@ -184,14 +186,14 @@ def run_bench(agent_counts: list[int], solvers: list[str], duration_s: float, pa
             finally:
                 if isinstance(controller, DistributedMpc):
                     controller.close()
-            if (mode == "distributed" and name != "ipopt-reference" and include_reference
-                    and row_cache is cache):
+            if (with_checks and mode == "distributed" and name != "ipopt-reference"
+                    and include_reference and row_cache is cache):
                 checks.append(accuracy_check(team, settings, recorder.samples, cache))
             row = _row(mode, agents, label, variables, result, recorder.cpu_s)
             log(f"    median update {row.update_ms['median']:.2f} ms, "
                 f"success {row.success_rate:.0%}, min h {row.min_h_m:.3f} m")
             rows.append(row)
-        if "rti" in solvers and agents == agent_counts[0]:
+        if with_checks and "rti" in solvers and agents == agent_counts[0]:
             log(f"  {agents} agents, rti against converged fatrop, serial...")
             fidelity.append(rti_fidelity(agents, _with_solver(base_settings, "rti", compiled),
                                          cache, duration_s))

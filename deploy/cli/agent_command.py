@@ -84,7 +84,7 @@ def _bench_agents(args: argparse.Namespace) -> int:
     return run_bench(args)
 
 
-PAPER_CLAIMS = ("delay", "iterations", "consensus")
+PAPER_CLAIMS = ("table1", "delay", "iterations", "consensus")
 
 
 def add_paper_parser(commands: argparse._SubParsersAction) -> None:
@@ -98,6 +98,8 @@ def add_paper_parser(commands: argparse._SubParsersAction) -> None:
     paper.add_argument("--duration", type=float, help="seconds per run (default: the "
                        "scenario's)")
     paper.add_argument("--out", default="paper", help="folder for the JSON and PNG")
+    paper.add_argument("--agents", type=int, nargs="+", default=[2, 3, 4],
+                       help="team sizes (table1)")
     paper.set_defaults(handler=_paper)
 
 
@@ -105,9 +107,16 @@ def _paper(args: argparse.Namespace) -> int:
     from pathlib import Path
 
     from deploy.paper.reproduce import reproduce
+    from deploy.paper.table1 import reproduce_table1
 
     if args.duration is not None and not args.duration > 0:
         print(f"porter: paper --duration must be positive, got {args.duration}",
               file=sys.stderr)
         return 2
+    if args.claim == "table1":
+        if not all(2 <= n <= 8 for n in args.agents):
+            print(f"porter: paper --agents must be in [2, 8], got {args.agents}",
+                  file=sys.stderr)
+            return 2
+        return reproduce_table1(args.agents, args.duration or 3.0, Path(args.out))
     return reproduce(args.claim, args.scenario, args.duration, Path(args.out))

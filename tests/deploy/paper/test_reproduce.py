@@ -46,3 +46,26 @@ def test_porter_paper_delay_runs_its_variants_and_writes_json_and_png(
 def test_a_bad_duration_is_refused(capsys: pytest.CaptureFixture[str]) -> None:
     assert main(["paper", "delay", "--duration", "-1"]) == 2
     assert "must be positive" in capsys.readouterr().err
+
+
+def test_porter_paper_table1_puts_both_modes_and_the_paper_side_by_side(
+        tmp_path: Path, capsys: pytest.CaptureFixture[str]) -> None:
+    assert main(["paper", "table1", "--agents", "2", "--duration", "0.2", "--out",
+                 str(tmp_path)]) == 0
+    printed = capsys.readouterr().out
+    assert "9.28 / 7.62" in printed  # the paper's 2-agent row beside porter's
+    rows = json.loads((tmp_path / "table1.json").read_text())["rows"]
+    assert [(r["agents"], r["solver"]) for r in rows] == [(2, "ipopt-reference"), (2, "rti")]
+    reference = rows[0]
+    # porter's local problem: the paper's 408 plus the barrier slack (one per stage)
+    assert reference["variables"][0] == 416 and reference["variables"][1] > 600
+    for row in rows:
+        distributed, centralized = row["distributed_ms"][0], row["centralized_ms"][0]
+        assert distributed > 0 and centralized > 0
+        assert row["reduction"] == pytest.approx(1 - distributed / centralized)
+    assert reference["paper"]["reduction"] == pytest.approx(1 - 9.28 / 7.62)
+
+
+def test_table1_refuses_impossible_team_sizes(capsys: pytest.CaptureFixture[str]) -> None:
+    assert main(["paper", "table1", "--agents", "1"]) == 2
+    assert "--agents must be in [2, 8]" in capsys.readouterr().err

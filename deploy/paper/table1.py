@@ -1,0 +1,86 @@
+"""``porter paper table1``: the paper's Table I, distributed vs centralized NLP solve time for
+2, 3 and 4 agents, with the paper's IPOPT configuration for both and porter's default
+solver beside it (closed loop on the SRB plant, ``deploy.bench.nmpc``)."""
+
+from __future__ import annotations
+
+import json
+from pathlib import Path
+from typing import Any
+
+from deploy.bench.nmpc import BenchRow, run_bench
+
+# Table I of the paper: decision variables (dist., cent.), IPOPT iterations, distributed and
+# centralized NLP solve time [ms] (average, standard deviation).
+PAPER_TABLE1: dict[int, dict[str, Any]] = {
+    2: {"variables": (408, 612), "iterations": 6, "distributed": (9.28, 0.27),
+        "centralized": (7.62, 0.66)},
+    3: {"variables": (456, 864), "iterations": 6, "distributed": (11.34, 0.97),
+        "centralized": (12.46, 1.11)},
+    4: {"variables": (504, 1116), "iterations": 5, "distributed": (11.55, 0.82),
+        "centralized": (15.07, 0.95)},
+}
+
+
+def nlp_ms(row: BenchRow) -> dict[str, float]:
+    """Time of one NLP solve: a local one (distributed) or the whole problem (centralized)."""
+    return row.local_ms if row.local_ms is not None else row.update_ms
+
+
+def table1_rows(rows: list[BenchRow]) -> list[dict]:
+    """Per team size and solver: both modes' NLP time and the distributed reduction."""
+    out = []
+    for agents in sorted({r.agents for r in rows}):
+        for solver in ("ipopt-reference", "rti"):
+            pair = {r.mode: r for r in rows if r.agents == agents and r.solver == solver}
+            if set(pair) != {"distributed", "centralized"}:
+                continue
+            dist, cent = nlp_ms(pair["distributed"]), nlp_ms(pair["centralized"])
+            paper = PAPER_TABLE1.get(agents)
+            row: dict[str, Any] = {"agents": agents, "solver": solver,
+                   "variables": (pair["distributed"].variables, pair["centralized"].variables),
+                   "distributed_ms": (dist["mean"], dist["std"]),
+                   "centralized_ms": (cent["mean"], cent["std"]),
+                   "reduction": 1.0 - dist["mean"] / cent["mean"],
+                   "iterations": (pair["distributed"].iterations_mean,
+                                  pair["centralized"].iterations_mean)}
+            if paper is not None and solver == "ipopt-reference":
+                row["paper"] = {**paper, "reduction": 1.0 - paper["distributed"][0]
+                                / paper["centralized"][0]}
+            out.append(row)
+    return out
+
+
+def format_table1(rows: list[dict]) -> str:
+    header = (f"{'n':>2} {'solver':<16}{'vars d/c':>11}{'iters d/c':>11}"
+              f"{'dist ms':>15}{'cent ms':>15}{'reduction':>10}   paper (IPOPT): dist / cent ms, "
+              "reduction")
+    lines = ["porter paper table1: distributed vs centralized NLP solve time (mean ± std)",
+             header, "-" * len(header)]
+    for r in rows:
+        paper = r.get("paper")
+        beside = (f"   {paper['distributed'][0]:.2f} / {paper['centralized'][0]:.2f}, "
+                  f"{paper['reduction']:+.0%}" if paper else "")
+        lines.append(
+            f"{r['agents']:>2} {r['solver']:<16}{r['variables'][0]:>5}/{r['variables'][1]:<5}"
+            f"{r['iterations'][0]:>5.1f}/{r['iterations'][1]:<5.1f}"
+            f"{r['distributed_ms'][0]:>9.2f} ±{r['distributed_ms'][1]:>4.1f}"
+            f"{r['centralized_ms'][0]:>9.2f} ±{r['centralized_ms'][1]:>4.1f}"
+            f"{r['reduction']:>+10.0%}{beside}")
+    lines.append("reduction = 1 - distributed / centralized NLP time; distributed = one local "
+                 "NLP (solved in parallel, one process per agent)")
+    return "\n".join(lines)
+
+
+def reproduce_table1(agent_counts: list[int], duration_s: float, out: Path) -> int:
+    rows, _, _ = run_bench(agent_counts, ["rti"], duration_s, parallel=True,
+                           include_reference=True,
+                           reference_modes=("centralized", "distributed"), with_checks=False)
+    table = table1_rows(rows)
+    print(format_table1(table))
+    out.mkdir(parents=True, exist_ok=True)
+    (out / "table1.json").write_text(json.dumps({"claim": "table1", "rows": table,
+                                                 "bench_rows": [r.as_dict() for r in rows]},
+                                                indent=2) + "\n")
+    print(f"wrote {out / 'table1.json'}")
+    return 0
