@@ -9,6 +9,8 @@ import sys
 from pathlib import Path
 
 from pydantic import ValidationError
+from rich.console import Console
+from rich.progress import BarColumn, Progress, TextColumn, TimeElapsedColumn
 
 from core.nmpc.settings import ChannelSettings, MpcSettings
 from deploy.config.files import ConfigError
@@ -16,7 +18,7 @@ from deploy.config.scenario import Scenario, load_scenario
 from deploy.recording.flight_recorder import FlightRecorder, RecorderSettings
 from deploy.recording.run_record import default_log_path, open_run_recorder
 from deploy.runtime.codegen_cache import CompiledCodeCache
-from deploy.runtime.sim_run import SimRun, summary_line
+from deploy.runtime.sim_run import SimRun
 from deploy.runtime.stop_request import StopRequest
 
 
@@ -74,16 +76,20 @@ def run_sim(args: argparse.Namespace, base_settings: MpcSettings) -> int:
         loop.attach_recorder(recorder)
         print(f"porter sim: recording to {path}", file=sys.stderr)
     show = not args.quiet
+    # A live bar only on a terminal: piped or logged stderr gets the transitions, no redraws.
+    bar = Progress(TextColumn("porter sim"), BarColumn(),
+                   TextColumn("{task.completed:5.1f}/{task.total:.1f} s simulated"),
+                   TextColumn("RTF {task.fields[rtf]:.2f}"), TimeElapsedColumn(),
+                   console=Console(stderr=True), disable=not (show and sys.stderr.isatty()))
+    task = bar.add_task("sim", total=scenario.duration_s, rtf=0.0)
 
     def progress(time_s: float, duration_s: float, wall_s: float) -> None:
-        if show:
-            print("\r" + summary_line(time_s, duration_s, wall_s), end="", file=sys.stderr,
-                  flush=True)
+        bar.update(task, completed=time_s, rtf=time_s / wall_s if wall_s > 0 else 0.0)
 
     summary: dict | None = None
     stop = StopRequest()
     try:
-        with stop.installed():
+        with stop.installed(), bar:
             summary = loop.run(progress, stop, verbose=show)
     finally:  # Ctrl-C, SIGTERM (raised as KeyboardInterrupt by the CLI) and errors alike
         loop.close()
@@ -92,8 +98,6 @@ def run_sim(args: argparse.Namespace, base_settings: MpcSettings) -> int:
             if recorder.dropped:
                 print(f"porter sim: the recorder dropped {recorder.dropped} messages",
                       file=sys.stderr)
-    if show:
-        print(file=sys.stderr)
     assert summary is not None
     text = json.dumps(summary, indent=2)
     print(text)

@@ -20,7 +20,7 @@ _SOURCES = {
     "deploy.runtime.process_names": ["COMM_LENGTH", "name_this_process"],
     "deploy.runtime.cpu_meter": ["RunningCpu", "cpu_seconds"],
     "deploy.runtime.run_metrics": ["RunMetrics"],
-    "deploy.runtime.sim_run": ["WBC_DECIMATION", "SimRun", "summary_line"],
+    "deploy.runtime.sim_run": ["WBC_DECIMATION", "SimRun"],
     "deploy.runtime.stop_request": ["StopRequest"],
     "deploy.runtime.timing": ["Pacer", "PeriodStats"],
 }
@@ -30,5 +30,5 @@ __all__ = ["COMM_LENGTH", "CompilationError", "CompiledCodeCache", "ControlLoop"
            "RunningCpu", "build_team_mpc", "cpu_seconds", "name_this_process",
            "SATURATION_MARGIN", "SimRun", "StopRequest", "TeamController", "TeamLinks",
            "WBC_DECIMATION", "WbcStep", "default_cache_directory", "finite_or_none",
-           "measurement_state", "mocap_state", "open_links", "summary_line"]
+           "measurement_state", "mocap_state", "open_links"]
 __getattr__ = lazy_exports(__name__, _SOURCES)

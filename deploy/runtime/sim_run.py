@@ -46,7 +46,7 @@ from drivers.interfaces import RobotDriver
 from drivers.mujoco.scene import PHYSICS_TIMESTEP_S, build_team_scene
 from drivers.mujoco.simulation import SimulatedEstop, TeamSimulation
 
-__all__ = ["WBC_DECIMATION", "SimRun", "summary_line"]
+__all__ = ["WBC_DECIMATION", "SimRun"]
 
 WBC_DECIMATION = 2  # physics steps per loop tick: 500 Hz
 MOCAP_VELOCITY_WINDOW_S = 0.08
@@ -206,9 +206,3 @@ class SimRun:
             self.recording.ground_truth(t, poses, yaw, desired, h, coupling)
 
 
-def summary_line(time_s: float, duration_s: float, wall_s: float) -> str:
-    """A one-line progress bar: simulated time and real-time factor."""
-    width = 30
-    done = int(width * min(time_s / duration_s, 1.0)) if duration_s > 0 else width
-    factor = time_s / wall_s if wall_s > 0 else float("inf")
-    return f"[{'#' * done}{'.' * (width - done)}] {time_s:5.1f}/{duration_s:.1f} s  RTF {factor:.2f}"

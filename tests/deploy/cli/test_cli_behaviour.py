@@ -44,3 +44,11 @@ def test_a_closed_pipe_ends_porter_quietly() -> None:
         os.close(write_end)
     assert done.returncode == 0, done.stderr
     assert "Traceback" not in done.stderr and "BrokenPipeError" not in done.stderr
+
+
+def test_no_progress_bar_when_stderr_is_not_a_terminal(
+        capsys: pytest.CaptureFixture[str]) -> None:
+    assert main(["sim", "--duration", "0.2", "--serial", "--no-record"]) == 0
+    err = capsys.readouterr().err
+    assert "RUNNING -> DONE" in err  # the transitions still reach the log
+    assert "\r" not in err and "━" not in err and "\x1b[" not in err
