@@ -52,3 +52,35 @@ def test_no_progress_bar_when_stderr_is_not_a_terminal(
     err = capsys.readouterr().err
     assert "RUNNING -> DONE" in err  # the transitions still reach the log
     assert "\r" not in err and "━" not in err and "\x1b[" not in err
+
+
+def test_a_terminal_gets_the_progress_bar() -> None:
+    import pty
+    import threading
+
+    controller, terminal = pty.openpty()
+    chunks: list[bytes] = []
+
+    def drain() -> None:  # read while porter writes: a full terminal buffer would block it
+        while True:
+            try:
+                chunk = os.read(controller, 65536)
+            except OSError:  # EIO: the other end is closed and drained
+                return
+            if not chunk:
+                return
+            chunks.append(chunk)
+
+    reader = threading.Thread(target=drain, daemon=True)
+    reader.start()
+    try:
+        done = subprocess.run([sys.executable, "-m", "deploy.cli", "sim", "--duration", "0.2",
+                               "--serial", "--no-record"], cwd=ROOT, stdout=subprocess.DEVNULL,
+                              stderr=terminal, timeout=300, check=False)
+    finally:
+        os.close(terminal)
+        reader.join(timeout=10)
+        os.close(controller)
+    err = b"".join(chunks).decode(errors="replace")
+    assert done.returncode == 0, err
+    assert "s simulated" in err and "RTF" in err
