@@ -15,6 +15,7 @@ from deploy.cli.agent_command import (
     add_bench_agents_parser,
     add_paper_parser,
 )
+from deploy.cli.log_arguments import add_log_parsers
 from deploy.cli.sim_arguments import add_sim_parser
 
 if TYPE_CHECKING:
@@ -332,30 +333,7 @@ def build_parser() -> argparse.ArgumentParser:
                         help="send to a running viewer (default URL: Rerun's local one)")
     replay.set_defaults(handler=_replay)
 
-    log = commands.add_parser("log", help="inspect and repair flight logs")
-    log_kinds = log.add_subparsers(dest="log_command", required=True)
-    info = log_kinds.add_parser("info", help="duration, topics, counts, summary metrics")
-    info.add_argument("log", help="LOG.mcap")
-    info.add_argument("--json", action="store_true", help="print it as one JSON document "
-                      "(path, size_bytes, duration_s, messages, topics, metadata, attachments, "
-                      "summary)")
-    info.set_defaults(handler=_log_info)
-    recover = log_kinds.add_parser("recover", help="make a killed run's log readable")
-    recover.add_argument("log", help="LOG.mcap left by a run that did not close it")
-    recover.add_argument("-o", "--output", help="recovered file (default LOG.recovered.mcap)")
-    recover.set_defaults(handler=_log_recover)
-
-    regress = commands.add_parser("regress", help="re-run logged NMPC decisions and compare")
-    regress.add_argument("logs", nargs="+", metavar="LOG", help="LOG.mcap files")
-    regress.add_argument("--settings", metavar="YAML",
-                         help="MpcSettings overriding the log's attached ones (what-if)")
-    regress.add_argument("--max-decisions", type=count,
-                         help="replay only the first N decisions of each log")
-    regress.add_argument("--json", help="also write the per-log report as JSON")
-    regress.add_argument("--refresh-expectations", action="store_true",
-                         help="(re)write LOG.expect.json from each log's summary instead of "
-                              "replaying: review and commit the result deliberately")
-    regress.set_defaults(handler=_regress)
+    add_log_parsers(commands, _log_info, _log_recover, _regress, count)
     add_agent_parser(commands)
     add_paper_parser(commands)
     return parser

@@ -3,7 +3,9 @@
 Each entry names a summary key (dotted for nested ones, e.g. ``payload_estimate_error.
 position_rms_m``) and a check: ``{"equals": v}``, ``{"min": a}``, ``{"max": b}`` or both.
 ``draft_expectations`` proposes them from a log's summary (exact for counts and flags, a band
-around measured values); a human edits and commits them deliberately (see logs/README.md).
+around measured values, ±10 % and at least 1e-3); a human edits and commits them deliberately
+(see logs/README.md). ``porter regress`` checks them against a re-simulation of the logged
+run (``deploy.recording.resimulation``), not against the summary stored in the log.
 """
 
 from __future__ import annotations
@@ -57,7 +59,32 @@ def check_expectations(summary: dict | None, path: Path) -> list[str]:
     return failures
 
 
-def draft_expectations(summary: dict, relative_band: float = 0.5) -> dict[str, dict]:
+def expectation_margins(summary: dict | None, path: Path) -> dict[str, float]:
+    """Per banded expectation (``min`` and ``max``), where the value sits: 1 at the band's
+    centre, 0 on an edge, negative outside (distance to the nearer edge / half the band)."""
+    try:
+        expectations = json.loads(path.read_text())
+    except (OSError, json.JSONDecodeError):
+        return {}
+    flat = _flatten(summary or {})
+    margins = {}
+    for key, check in expectations.items():
+        value = flat.get(key)
+        if "min" in check and "max" in check and isinstance(value, int | float):
+            half = (check["max"] - check["min"]) / 2
+            if value == check["min"] == 0:
+                continue  # a physical floor (a norm at 0), not a tolerance's edge
+            if half > 0:
+                margins[key] = min(value - check["min"], check["max"] - value) / half
+    return margins
+
+
+def _signed(key: str) -> bool:
+    """Summary metrics that may be negative: the safety values h (inside the margin)."""
+    return key.split(".")[0] in ("min_h_m", "min_h_by_pair_m")
+
+
+def draft_expectations(summary: dict, relative_band: float = 0.1) -> dict[str, dict]:
     """Exact checks for flags, counts and names; ``value +- relative_band |value|`` (at least
     1e-3) for measured floats; nothing for wall-clock figures."""
     drafted: dict[str, dict] = {}
@@ -68,5 +95,8 @@ def draft_expectations(summary: dict, relative_band: float = 0.5) -> dict[str, d
             drafted[key] = {"equals": value}
         elif isinstance(value, float):
             band = max(relative_band * abs(value), 1e-3)
-            drafted[key] = {"min": round(value - band, 6), "max": round(value + band, 6)}
+            low = value - band
+            if value >= 0 and not _signed(key):
+                low = max(low, 0.0)  # norms, errors, residuals, distances, times: never < 0
+            drafted[key] = {"min": round(low, 6), "max": round(value + band, 6)}
     return drafted

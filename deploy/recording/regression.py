@@ -28,6 +28,7 @@ from pathlib import Path
 import numpy as np
 import yaml
 
+from core.locomotion.settings import WbcSettings
 from core.model.team import TeamModel
 from core.model.team_settings import TeamSettings
 from core.nmpc.admm_mpc import DistributedMpc
@@ -39,9 +40,15 @@ from core.nmpc.settings import MpcSettings
 from core.nmpc.warm_start import ControllerMemory
 from deploy.config.files import ConfigError, load_settings, validate_settings
 from deploy.recording import log_format as fmt
-from deploy.recording.expectations import check_expectations, draft_expectations, expectations_path
+from deploy.recording.expectations import (
+    check_expectations,
+    draft_expectations,
+    expectation_margins,
+    expectations_path,
+)
 from deploy.recording.log_reader import LogError, LogFile
 from deploy.recording.messages import porter_log_pb2 as pb
+from deploy.recording.resimulation import resimulate as resimulate_run
 from deploy.runtime.blas_kernels import GENERIC, cpu_target, host_cpu_flags
 from deploy.runtime.codegen_cache import CompiledCodeCache
 from drivers.robot_descriptions import srb_parameters
@@ -69,6 +76,8 @@ class LogRegression:
     status_mismatches: int = 0
     first_failure: str = ""
     expectation_failures: list[str] = field(default_factory=list)
+    resimulated: bool = False  # expectations checked on a re-simulation of the logged run
+    expectation_margins: dict[str, float] = field(default_factory=dict)
     kernels_recorded: str = "unknown"  # BLASFEO target of the recording (its metadata)
     kernels_replayed: str = "unknown"  # BLASFEO target of this replay
 
@@ -180,7 +189,11 @@ def _fold(report: LogRegression, key: str, ours: np.ndarray, theirs: np.ndarray,
 
 def regress_log(path: Path | str, cache: CompiledCodeCache | None = None,
                 settings: MpcSettings | None = None,
-                max_decisions: int | None = None) -> LogRegression:
+                max_decisions: int | None = None, resimulate: bool = True,
+                wbc_settings: WbcSettings | None = None) -> LogRegression:
+    """Replay the log's decisions (``settings``: a changed NMPC) and check its expectations on
+    a re-simulation of the run (``resimulate``; ``wbc_settings``: a changed WBC) or, without
+    one, on the summary stored in the log."""
     log = LogFile(path)
     report = LogRegression(str(path), kernels_recorded=recorded_kernels(log))
     cache = cache or CompiledCodeCache(blas_target=replay_blas_target(report.kernels_recorded))
@@ -216,7 +229,11 @@ def regress_log(path: Path | str, cache: CompiledCodeCache | None = None,
             controller.close()
     expected = expectations_path(Path(path))
     if expected.exists():
-        report.expectation_failures = check_expectations(log.summary(), expected)
+        summary = (resimulate_run(log, cache, settings, wbc_settings) if resimulate
+                   else log.summary())
+        report.resimulated = resimulate
+        report.expectation_failures = check_expectations(summary, expected)
+        report.expectation_margins = expectation_margins(summary, expected)
     return report
 
 
@@ -237,6 +254,11 @@ def format_report(report: LogRegression) -> str:
                      "about a newton are rounding, not a changed controller; replay in a fresh "
                      f"process on a CPU with {report.kernels_recorded} kernels to compare")
     lines.extend(f"  expectation: {failure}" for failure in report.expectation_failures)
+    if report.expectation_margins:
+        tightest = sorted(report.expectation_margins.items(), key=lambda item: item[1])[:3]
+        checked = "a re-simulation" if report.resimulated else "the logged summary"
+        lines.append(f"  expectations on {checked}; tightest margins (1 = band centre, 0 = "
+                     "edge): " + ", ".join(f"{k} {m:.2f}" for k, m in tightest))
     return "\n".join(lines)
 
 
@@ -261,13 +283,15 @@ def run_regress(args: argparse.Namespace) -> int:
     if args.refresh_expectations:
         return refresh_expectations(args.logs)
     settings = load_settings(args.settings, MpcSettings) if args.settings else None
+    wbc = load_settings(args.wbc_settings, WbcSettings) if args.wbc_settings else None
     cache: CompiledCodeCache | None = None  # one per process: kernels load once
     reports = []
     for path in args.logs:
         try:
             cache = cache or CompiledCodeCache(blas_target=replay_blas_target(
                 recorded_kernels(LogFile(path))))
-            report = regress_log(path, cache, settings, args.max_decisions)
+            report = regress_log(path, cache, settings, args.max_decisions,
+                                 not args.no_resimulate, wbc)
         except (LogError, ConfigError) as error:
             print(f"porter: {error}", file=sys.stderr)
             return 2

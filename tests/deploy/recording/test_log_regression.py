@@ -14,7 +14,11 @@ import pytest
 import yaml
 
 from deploy.cli.porter import main
-from deploy.recording.log_format import MPC_SETTINGS_ATTACHMENT, RUN_METADATA
+from deploy.recording.log_format import (
+    MPC_SETTINGS_ATTACHMENT,
+    RUN_METADATA,
+    WBC_SETTINGS_ATTACHMENT,
+)
 from deploy.recording.log_reader import LogFile
 from deploy.recording.regression import TOLERANCES, regress_log, replay_blas_target
 from deploy.runtime.blas_kernels import GENERIC, cpu_target, host_cpu_flags
@@ -48,6 +52,10 @@ def test_shipped_logs_pass_on_their_kernels(tmp_path: Path) -> None:
         assert report["kernels_recorded"] == report["kernels_replayed"] != "unknown", report
         assert report["status_mismatches"] == 0 and report["decisions"] == 90
         assert all(report["max_deviation"][k] <= TOLERANCES[k] for k in TOLERANCES), report
+        # the expectations held on a re-simulation of the run, not on the stored summary
+        assert report["resimulated"] and report["expectation_failures"] == []
+        assert len(report["expectation_margins"]) > 20
+        assert min(report["expectation_margins"].values()) >= 0
 
 
 _OTHER_KERNELS_FIRST = """
@@ -94,7 +102,8 @@ def test_a_changed_cost_weight_fails(tmp_path: Path, capsys: pytest.CaptureFixtu
     changed = tmp_path / "changed.yaml"
     changed.write_text(yaml.safe_dump(settings))
     code = main(["regress", str(LOGS / "two_go2.mcap"), "--settings", str(changed),
-                 "--max-decisions", "3", "--json", str(tmp_path / "report.json")])
+                 "--max-decisions", "3", "--no-resimulate", "--json",
+                 str(tmp_path / "report.json")])
     assert code == 1
     assert "FAIL" in capsys.readouterr().out
     report = json.loads((tmp_path / "report.json").read_text())[0]
@@ -118,7 +127,7 @@ def test_refresh_writes_expectations_that_hold(tmp_path: Path) -> None:
     assert main(["regress", str(log), "--refresh-expectations"]) == 0
     drafted = json.loads(log.with_suffix(".expect.json").read_text())
     assert drafted["falls"] == {"equals": 0} and "wall_s" not in drafted
-    assert regress_log(log, max_decisions=1).expectation_failures == []
+    assert regress_log(log, max_decisions=1, resimulate=False).expectation_failures == []
 
 
 def test_a_bad_log_is_a_usage_error(tmp_path: Path, capsys: pytest.CaptureFixture[str]) -> None:
@@ -126,3 +135,23 @@ def test_a_bad_log_is_a_usage_error(tmp_path: Path, capsys: pytest.CaptureFixtur
     bad.write_bytes(b"\x00" * 100)
     assert main(["regress", str(bad)]) == 2
     assert "not an MCAP file" in capsys.readouterr().err
+
+
+def test_a_changed_wbc_gain_passes_the_replay_and_fails_the_resimulation(tmp_path: Path) -> None:
+    """The decision replay cannot see a change outside the NMPC; the re-simulated metrics
+    can: half the swing-foot gain moves consensus residuals and margin flags out of their
+    bands."""
+    settings = yaml.safe_load(LogFile(LOGS / "two_go2.mcap").attachment_text(
+        WBC_SETTINGS_ATTACHMENT))
+    settings["swing_position_gain"] *= 0.5
+    changed = tmp_path / "wbc.yaml"
+    changed.write_text(yaml.safe_dump(settings))
+    report_path = tmp_path / "report.json"
+    done = porter_regress(str(LOGS / "two_go2.mcap"), "--wbc-settings", str(changed),
+                          "--json", str(report_path))
+    assert done.returncode == 1, done.stdout + done.stderr
+    report = json.loads(report_path.read_text())[0]
+    assert all(report["max_deviation"][k] <= TOLERANCES[k] for k in TOLERANCES)
+    assert report["status_mismatches"] == 0
+    assert report["resimulated"] and report["expectation_failures"]
+    assert min(report["expectation_margins"].values()) < 0
