@@ -84,7 +84,7 @@ def _bench_agents(args: argparse.Namespace) -> int:
     return run_bench(args)
 
 
-PAPER_CLAIMS = ("table1", "delay", "iterations", "consensus")
+PAPER_CLAIMS = ("table1", "delay", "iterations", "consensus", "experiments")
 
 
 def add_paper_parser(commands: argparse._SubParsersAction) -> None:
@@ -100,12 +100,15 @@ def add_paper_parser(commands: argparse._SubParsersAction) -> None:
     paper.add_argument("--out", default="paper", help="folder for the JSON and PNG")
     paper.add_argument("--agents", type=int, nargs="+", default=[2, 3, 4],
                        help="team sizes (table1)")
+    paper.add_argument("--scenarios", nargs="+", help="experiments: these scenarios only "
+                       "(default: all five)")
     paper.set_defaults(handler=_paper)
 
 
 def _paper(args: argparse.Namespace) -> int:
     from pathlib import Path
 
+    from deploy.paper.experiments import EXPERIMENTS, reproduce_experiments
     from deploy.paper.reproduce import reproduce
     from deploy.paper.table1 import reproduce_table1
 
@@ -119,4 +122,12 @@ def _paper(args: argparse.Namespace) -> int:
                   file=sys.stderr)
             return 2
         return reproduce_table1(args.agents, args.duration or 3.0, Path(args.out))
+    if args.claim == "experiments":
+        unknown = sorted(set(args.scenarios or []) - set(EXPERIMENTS))
+        if unknown:
+            print(f"porter: paper experiments: unknown scenarios {unknown}; choose from "
+                  f"{sorted(EXPERIMENTS)}", file=sys.stderr)
+            return 2
+        return reproduce_experiments(args.scenarios or list(EXPERIMENTS), args.duration,
+                                     Path(args.out))
     return reproduce(args.claim, args.scenario, args.duration, Path(args.out))

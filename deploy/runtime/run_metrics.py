@@ -31,6 +31,8 @@ class RunMetrics:
     goal_tolerance_m: float
     pair_names: list[str]
     position_error_m: list[float] = field(default_factory=list)
+    # xy of the payload and of each robot [m], world frame, per ground-truth sample
+    body_xy_m: list[np.ndarray] = field(default_factory=list)
     yaw_error_rad: list[float] = field(default_factory=list)
     min_h_by_pair_m: np.ndarray | None = None
     max_coupling_error_m: float = 0.0

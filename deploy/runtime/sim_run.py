@@ -198,6 +198,7 @@ class SimRun:
                        .safety_distance_m - o.radius_m for o in self.obstacles]
                       for body in bodies])
         coupling = np.array([sim.coupling_error_m(r.name) for r in self.control.robots])
+        self.metrics.body_xy_m.append(np.array(bodies))
         self.metrics.record_ground_truth(t, position[0:2], yaw, desired[0:2], desired[8], h,
                                          coupling)
         if self.recording is not None and self.recording.ground_truth_due(t):

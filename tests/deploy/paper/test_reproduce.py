@@ -69,3 +69,22 @@ def test_porter_paper_table1_puts_both_modes_and_the_paper_side_by_side(
 def test_table1_refuses_impossible_team_sizes(capsys: pytest.CaptureFixture[str]) -> None:
     assert main(["paper", "table1", "--agents", "1"]) == 2
     assert "--agents must be in [2, 8]" in capsys.readouterr().err
+
+
+def test_porter_paper_experiments_draws_the_paths_among_the_safe_sets(
+        tmp_path: Path, capsys: pytest.CaptureFixture[str]) -> None:
+    assert main(["paper", "experiments", "--scenarios", "moving_obstacle", "--duration", "0.4",
+                 "--out", str(tmp_path)]) == 0
+    assert "a moving obstacle: avoided" in capsys.readouterr().out
+    row = json.loads((tmp_path / "experiments.json").read_text())["rows"][0]
+    assert row["scenario"] == "moving_obstacle" and row["robots"] == ["go2_0", "go2_1"]
+    paths = row["paths_m"]
+    assert len(paths) > 100 and len(paths[0]) == 3  # payload and two robots per sample
+    moving = [o for o in row["obstacles"] if o["start_m"] != o["end_m"]]
+    assert moving and all(o["safe_radius_m"] > o["radius_m"] for o in row["obstacles"])
+    assert (tmp_path / "experiments.png").read_bytes().startswith(b"\x89PNG")
+
+
+def test_experiments_refuse_unknown_scenarios(capsys: pytest.CaptureFixture[str]) -> None:
+    assert main(["paper", "experiments", "--scenarios", "nowhere"]) == 2
+    assert "unknown scenarios ['nowhere']" in capsys.readouterr().err

@@ -1,0 +1,109 @@
+"""``porter paper experiments``: the paper's experiments as scenarios (2- and 3-agent
+transport, an unknown 12 kg payload with pushes, a moving obstacle, a narrow passage), run on
+the MuJoCo backend and drawn as the paper's trajectory figures: xy paths of the payload and
+the robots among the obstacles and their safe sets."""
+
+from __future__ import annotations
+
+import json
+from pathlib import Path
+
+import numpy as np
+
+from core.nmpc.settings import MpcSettings
+from deploy.config.scenario import load_scenario
+from deploy.runtime.codegen_cache import CompiledCodeCache
+from deploy.runtime.sim_run import SimRun
+
+# scenario -> what the paper shows for it (it reports safety and completion, no numbers)
+EXPERIMENTS = {
+    "two_go2": "two Go2, 5 kg payload, 7 obstacles: safe transport (h >= 0)",
+    "mixed_three": "two Go2 + one A1, 5 kg payload: safe transport",
+    "heavy_payload_pushes": "unknown 12 kg payload and pushes: safe and robust",
+    "moving_obstacle": "a moving obstacle: avoided",
+    "narrow_passage": "a narrow passage: passed safely",
+}
+
+
+def run_experiment(name: str, duration_s: float | None, cache: CompiledCodeCache) -> dict:
+    scenario = load_scenario(name)
+    if duration_s is not None:
+        scenario = scenario.model_copy(update={"duration_s": min(duration_s,
+                                                                 scenario.duration_s)})
+    scenario = scenario.model_copy(update={"controller": scenario.controller.model_copy(
+        update={"executor": "serial"})})
+    run = SimRun(scenario, cache, MpcSettings())
+    try:
+        summary = run.run()
+    finally:
+        run.close()
+    paths = np.array(run.metrics.body_xy_m)  # (samples, 1 + robots, 2)
+    safety = run.settings.safety.safety_distance_m
+    obstacles = [{"start_m": o.row(0.0, 0.0)[0:2].tolist(),
+                  "end_m": o.row(summary["duration_s"], 0.0)[0:2].tolist(),
+                  "radius_m": o.radius_m, "safe_radius_m": o.radius_m + safety}
+                 for o in run.obstacles]
+    return {"scenario": name, "paper": EXPERIMENTS[name], "falls": summary["falls"],
+            "reached_goal": summary["reached_goal"], "min_h_m": summary["min_h_m"],
+            "rms_payload_position_error_m": summary["rms_payload_position_error_m"],
+            "duration_s": summary["duration_s"], "robots": [r.name for r in run.control.robots],
+            "goal_m": run.metrics.goal_m[0:2].tolist(), "obstacles": obstacles,
+            "paths_m": paths[:: max(1, len(paths) // 2000)].tolist()}
+
+
+def plot_experiments(rows: list[dict], path: Path) -> None:
+    import matplotlib
+
+    matplotlib.use("Agg")  # files only, no display
+    import matplotlib.pyplot as plt
+
+    figure, axes = plt.subplots(1, len(rows), figsize=(5 * len(rows), 4.5), squeeze=False)
+    for axis, row in zip(axes[0], rows, strict=True):
+        paths = np.asarray(row["paths_m"])
+        for o in row["obstacles"]:
+            start, end = np.asarray(o["start_m"]), np.asarray(o["end_m"])
+            for centre, alpha in ((start, 0.6), (end, 0.25)) if not np.allclose(
+                    start, end) else ((start, 0.6),):
+                xy = (float(centre[0]), float(centre[1]))
+                axis.add_patch(plt.Circle(xy, o["radius_m"], color="0.3", alpha=alpha))
+                axis.add_patch(plt.Circle(xy, o["safe_radius_m"], fill=False,
+                                          linestyle="--", color="tab:red", alpha=alpha))
+            if not np.allclose(start, end):
+                axis.annotate("", end, start, arrowprops={"arrowstyle": "->", "color": "0.3"})
+        axis.plot(paths[:, 0, 0], paths[:, 0, 1], color="k", linewidth=2, label="payload")
+        for i, robot in enumerate(row["robots"], start=1):
+            axis.plot(paths[:, i, 0], paths[:, i, 1], linewidth=1, label=robot)
+        axis.plot(*row["goal_m"], marker="*", markersize=12, color="tab:green", label="goal")
+        axis.set_aspect("equal")
+        axis.set_title(f"{row['scenario']}: min h {row['min_h_m']:.3f} m, falls {row['falls']}",
+                       fontsize=9)
+        axis.set_xlabel("x [m]")
+        axis.set_ylabel("y [m]")
+        axis.grid(True, alpha=0.3)
+        axis.legend(fontsize=7, loc="best")
+    figure.tight_layout()
+    figure.savefig(path, dpi=100)
+    plt.close(figure)
+
+
+def format_experiments(rows: list[dict]) -> str:
+    header = (f"{'scenario':<22}{'goal':>6}{'falls':>6}{'min h m':>9}{'rms pos m':>10}   "
+              "the paper shows")
+    lines = ["porter paper experiments: the paper's experiments as MuJoCo scenarios", header,
+             "-" * len(header)]
+    lines += [f"{r['scenario']:<22}{'yes' if r['reached_goal'] else 'no':>6}{r['falls']:>6}"
+              f"{r['min_h_m']:>9.3f}{r['rms_payload_position_error_m']:>10.3f}   {r['paper']}"
+              for r in rows]
+    return "\n".join(lines)
+
+
+def reproduce_experiments(names: list[str], duration_s: float | None, out: Path) -> int:
+    cache = CompiledCodeCache()
+    rows = [run_experiment(name, duration_s, cache) for name in names]
+    print(format_experiments(rows))
+    out.mkdir(parents=True, exist_ok=True)
+    plot_experiments(rows, out / "experiments.png")
+    (out / "experiments.json").write_text(json.dumps({"claim": "experiments", "rows": rows})
+                                          + "\n")
+    print(f"wrote {out / 'experiments.json'} and {out / 'experiments.png'}")
+    return 0
