@@ -26,7 +26,14 @@ from mcap_protobuf.schema import register_schema
 from pydantic import Field
 
 from core.model.strict_model import StrictModel
-from deploy.recording.log_format import EVENTS, PROFILE, SUMMARY_METADATA, to_nanoseconds
+from deploy.recording.log_format import (
+    EVENTS,
+    FOXGLOVE_LOG,
+    PROFILE,
+    SUMMARY_METADATA,
+    foxglove_log,
+    to_nanoseconds,
+)
 from deploy.recording.messages import porter_log_pb2 as pb
 
 Sink = Callable[[str, Any, int], None]  # (topic, protobuf message, log time [ns])
@@ -180,6 +187,20 @@ class FlightRecorder:
             self._closing.wait(self.settings.poll_interval_s)
 
     def _write(self, topic: str, message: Any, log_time_ns: int) -> None:
+        self._add(topic, message, log_time_ns)
+        if topic == EVENTS:
+            self._add(FOXGLOVE_LOG, foxglove_log(message), log_time_ns)
+        for sink in list(self._sinks):
+            try:
+                sink(topic, message, log_time_ns)
+            except Exception as error:  # a viewer going away must not stop the recording
+                self._sinks.remove(sink)
+                self._write(EVENTS, pb.Event(time_s=log_time_ns * 1e-9, level=pb.Event.WARNING,
+                                             source="recorder", text=f"sink removed: {error}"),
+                            log_time_ns)
+
+    def _add(self, topic: str, message: Any, log_time_ns: int) -> None:
+        """One message into the file (its channel and schema registered on first use)."""
         channel = self._channels.get(topic)
         if channel is None:
             name = type(message).DESCRIPTOR.full_name
@@ -195,14 +216,6 @@ class FlightRecorder:
                                  sequence=sequence)
         self.written += 1
         self._last_time_ns = max(self._last_time_ns, log_time_ns)
-        for sink in list(self._sinks):
-            try:
-                sink(topic, message, log_time_ns)
-            except Exception as error:  # a viewer going away must not stop the recording
-                self._sinks.remove(sink)
-                self._write(EVENTS, pb.Event(time_s=log_time_ns * 1e-9, level=pb.Event.WARNING,
-                                             source="recorder", text=f"sink removed: {error}"),
-                            log_time_ns)
 
     def _report_drops(self) -> None:
         dropped = self.dropped

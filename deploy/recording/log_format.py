@@ -17,6 +17,7 @@ from foxglove_schemas_protobuf.CubePrimitive_pb2 import CubePrimitive
 from foxglove_schemas_protobuf.CylinderPrimitive_pb2 import CylinderPrimitive
 from foxglove_schemas_protobuf.FrameTransform_pb2 import FrameTransform
 from foxglove_schemas_protobuf.FrameTransforms_pb2 import FrameTransforms
+from foxglove_schemas_protobuf.Log_pb2 import Log
 from foxglove_schemas_protobuf.PoseInFrame_pb2 import PoseInFrame
 from foxglove_schemas_protobuf.SceneEntity_pb2 import SceneEntity
 from foxglove_schemas_protobuf.SceneUpdate_pb2 import SceneUpdate
@@ -53,6 +54,17 @@ PAYLOAD_ESTIMATE = "/payload/estimate"
 GROUND_TRUTH = "/sim/ground_truth"
 LOOP_TIMING = "/loop/timing"
 EVENTS = "/events"
+FOXGLOVE_LOG = "/log"  # every event again as foxglove.Log, for Foxglove's Log panel
+
+# porter's Event levels -> foxglove.Log levels (INFO 2, WARNING 3, ERROR 4)
+_FOXGLOVE_LEVEL = {pb.Event.INFO: Log.INFO, pb.Event.WARNING: Log.WARNING,
+                   pb.Event.ERROR: Log.ERROR}
+
+
+def foxglove_log(event: pb.Event) -> Log:
+    """``event`` as a ``foxglove.Log`` (name: its source)."""
+    return Log(timestamp=timestamp(event.time_s), level=_FOXGLOVE_LEVEL.get(event.level, Log.UNKNOWN),
+               message=event.text, name=event.source)
 
 
 def robot_topic(robot: str, kind: str) -> str:

@@ -57,9 +57,19 @@ def test_every_channel_reads_back_equal(recorded_run: tuple[Path, list, dict]) -
     path, logged, summary = recorded_run
     with open(path, "rb") as stream:
         reader = make_reader(stream, decoder_factories=[DecoderFactory()])
-        read = [(channel.topic, decoded, message.log_time)
-                for _, channel, message, decoded in reader.iter_decoded_messages(
-                    log_time_order=False)]
+        read_all = [(channel.topic, decoded, message.log_time, schema.name)
+                    for schema, channel, message, decoded in reader.iter_decoded_messages(
+                        log_time_order=False)]
+    # every event is written twice: porter's Event and a foxglove.Log for Foxglove's Log panel
+    events = [(m, t) for topic, m, t in logged if topic == fmt.EVENTS]
+    logs = [(m, t, schema) for topic, m, t, schema in read_all if topic == fmt.FOXGLOVE_LOG]
+    assert len(logs) == len(events) > 0
+    levels = {0: 2, 1: 3, 2: 4}  # porter INFO/WARNING/ERROR -> foxglove.Log INFO/WARNING/ERROR
+    for (log_message, time_ns, schema), (event, event_time) in zip(logs, events, strict=True):
+        assert schema == "foxglove.Log" and time_ns == event_time
+        assert (log_message.message, log_message.name) == (event.text, event.source)
+        assert log_message.level == levels[event.level]
+    read = [(topic, m, t) for topic, m, t, _ in read_all if topic != fmt.FOXGLOVE_LOG]
     assert len(read) == len(logged)
     for (topic, decoded, time_ns), (topic_logged, message, time_logged) in zip(
             read, logged, strict=True):
