@@ -43,8 +43,23 @@ def describe(log: LogFile) -> str:
         lines.append("summary: none (the run ended before writing one)")
     else:
         lines.append("summary:")
-        lines.extend(f"  {key}: {summary[key]}" for key in SUMMARY_KEYS if key in summary)
+        for key in SUMMARY_KEYS:
+            if key not in summary:
+                continue
+            value = summary[key]
+            if isinstance(value, dict):  # one line, its entries named: "median 13.4, p95 20.4"
+                value = ", ".join(f"{name} {_number(item)}" for name, item in value.items())
+            lines.append(f"  {key}: {_number(value)}")
     return "\n".join(lines)
+
+
+def _number(value: object) -> str:
+    """Floats to 4 significant digits, flags as yes/no, everything else as written."""
+    if isinstance(value, bool):
+        return "yes" if value else "no"
+    if isinstance(value, float):
+        return f"{value:.4g}"
+    return str(value)
 
 
 def info_record(log: LogFile) -> dict:

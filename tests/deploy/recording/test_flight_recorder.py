@@ -226,6 +226,8 @@ def test_log_info_prints_topics_and_summary(recorded_run: tuple[Path, list, dict
     assert main(["log", "info", str(recorded_run[0])]) == 0
     out = capsys.readouterr().out
     assert "/nmpc/update" in out and "500.0" in out and "nmpc_updates: 24" in out
+    # written for people: nested metrics named on one line, no Python reprs
+    assert "nmpc_update_ms: median " in out and "{" not in out and "True" not in out
 
 
 def test_chunks_carry_data_crcs_and_a_corrupted_one_is_caught(tmp_path: Path) -> None:
