@@ -158,7 +158,11 @@ def run_deploy(args: argparse.Namespace) -> int:
     assert loop is not None and summary is not None
     if loop.report is not None and not loop.report.ok:
         print(loop.report.text(), file=sys.stderr)
-    print(json.dumps(summary, indent=2))
+    text = json.dumps(summary, indent=2)
+    print(text)
+    if getattr(args, "json", None):
+        Path(args.json).write_text(text + "\n")
+        say(f"wrote {args.json}")
     say(f"{loop.ended_by}; final state {loop.supervisor.state.name}")
     return exit_code(loop, stop)
 

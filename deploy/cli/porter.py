@@ -320,6 +320,7 @@ def build_parser() -> argparse.ArgumentParser:
                         help="seconds to run once armed (default: the scenario's duration_s)")
     deploy.add_argument("--record", metavar="LOG.mcap",
                         help="flight log (default runs/deploy-<scenario>-<time>.mcap)")
+    deploy.add_argument("--json", metavar="FILE", help="also write the summary as JSON")
     deploy.add_argument("--no-record", action="store_true",
                         help="no flight log (--backend sim only)")
     deploy.set_defaults(handler=_deploy)

@@ -121,9 +121,11 @@ def test_porter_deploy_runs_its_admm_agents_over_zenoh(tmp_path: Path) -> None:
     config.write_text(yaml.safe_dump(data))
     log_path = tmp_path / "run.mcap"
     assert main(["deploy", "--config", str(config), "--backend", "sim", "--yes",
-                 "--duration", "2", "--record", str(log_path)]) == 0
+                 "--duration", "2", "--record", str(log_path), "--json",
+                 str(tmp_path / "summary.json")]) == 0
     summary = LogFile(log_path).summary()
     assert summary is not None and summary["final_state"] == "DONE"
+    assert json.loads((tmp_path / "summary.json").read_text()) == summary
     assert summary["nmpc_failed_updates"] == 0 and summary["nmpc_updates"] > 60
     as_run = yaml.safe_load(LogFile(log_path).attachment_text("deploy_config.yaml"))
     assert as_run["nmpc"]["executor"] == "zenoh"
