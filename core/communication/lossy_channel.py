@@ -46,7 +46,6 @@ class LossyChannel:
         self._held: list[_Message | None] = [None] * self.agent_count
         self.sent = 0
         self.dropped = 0
-        self.stale_rounds = 0  # (agent, round) pairs where the consensus used an old message
 
     def exchange(self, shared: np.ndarray, update: int) -> tuple[np.ndarray, np.ndarray]:
         """What the consensus receives this round (rows per agent) from what the agents sent
@@ -72,8 +71,6 @@ class LossyChannel:
         fresh = np.ones(self.agent_count, dtype=bool)
         for agent, held in enumerate(self._held):
             assert held is not None  # the first round delivers every message
-            if held.sent_round != self._round:
-                self.stale_rounds += 1
             limit = s.max_age_rounds
             fresh[agent] = limit is None or self._round - held.sent_round <= limit
             value = held.shared

@@ -103,7 +103,9 @@ class ChannelSettings(StrictModel):
     or arrives after a delay drawn uniformly from 0..``max_delay_rounds`` rounds (one round
     = one ADMM iteration); the receiver holds the newest one that arrived, shifted one stage
     per MPC update since it was sent. The default (0, 0) is a perfect network. ``seed``
-    makes a run repeatable."""
+    makes a run repeatable. ``max_age_rounds`` (porter's, not the paper's): a held message
+    older than this is left out of the consensus and its agent's dual waits; None is the
+    paper's pure hold-last, which porter's team did not survive at D 20, p 0.5."""
 
     max_delay_rounds: int = Field(0, ge=0, le=1000)
     drop_probability: float = Field(0.0, ge=0.0, lt=1.0)

@@ -42,12 +42,6 @@ class AgentAddress:
     listen: list[str]
 
 
-def problem_sizes(spec: LocalSolverSpec, solver: object) -> wire.ProblemSizes:
-    problem = solver.problem  # type: ignore[attr-defined]
-    return wire.ProblemSizes(problem.decision.size, problem.parameters.size,
-                             problem.lower_constraints.size)
-
-
 class AdmmAgent:
     """One agent's local solver behind Zenoh; ``serve`` runs until told to stop."""
 
@@ -59,7 +53,7 @@ class AdmmAgent:
         self.address = address
         self.parent_pid = parent_pid
         self.solver = spec.build()
-        self.sizes = problem_sizes(spec, self.solver)
+        self.sizes = wire.ProblemSizes.of(self.solver.problem)
         self.digest = wire.problem_digest(spec)
         self.rejected: Counter[str] = Counter()
         self.solved = 0
@@ -86,9 +80,6 @@ class AdmmAgent:
             self._stop.set()
             with contextlib.suppress(Exception):
                 session.close()
-
-    def stop(self) -> None:
-        self._stop.set()
 
     def _newest(self, timeout_s: float) -> bytes | None:
         try:

@@ -18,6 +18,7 @@ from google.protobuf.message import DecodeError
 
 from core.nmpc.admm_executor import LocalSolveRequest, LocalSolverSpec
 from core.nmpc.nlp_solver import NlpSolution, SolveStats
+from core.nmpc.stagewise_nlp import NlpProblem
 from deploy.agents.messages import admm_wire_pb2 as pb
 
 WIRE_VERSION = 1
@@ -39,6 +40,11 @@ class ProblemSizes:
     decision: int
     parameters: int
     constraints: int
+
+    @classmethod
+    def of(cls, problem: NlpProblem) -> ProblemSizes:
+        return cls(problem.decision.size, problem.parameters.size,
+                   problem.lower_constraints.size)
 
 
 def problem_digest(spec: LocalSolverSpec) -> str:

@@ -47,14 +47,12 @@ class ZenohExecutor:
         self.team = team
         self.key_prefix = network.key_prefix or f"porter/{team}/{os.getpid()}"
         self.endpoints = [concrete_endpoint(e) for e in network.listen]
-        nlp = build_transport_problem(spec.settings, spec.agent_count, local=True).nlp
-        self.sizes = wire.ProblemSizes(nlp.decision.size, nlp.parameters.size,
-                                       nlp.lower_constraints.size)
+        self.sizes = wire.ProblemSizes.of(
+            build_transport_problem(spec.settings, spec.agent_count, local=True).nlp)
         self.digest = wire.problem_digest(spec)
         self.rejected: Counter[str] = Counter()  # dropped messages by reason
         self.late_replies = 0  # replies of an earlier round, dropped
-        self.hellos: dict[int, wire.pb.Hello] = {}
-        self.last_seen_s: dict[int, float] = {}
+        self.hellos: dict[int, wire.pb.Hello] = {}  # each agent's latest
         self._sequence = 0
         self._replies: dict[int, NlpSolution] = {}
         self._condition = threading.Condition()
@@ -127,7 +125,6 @@ class ZenohExecutor:
             return
         with self._condition:
             self.hellos[hello.agent] = hello
-            self.last_seen_s[hello.agent] = time.monotonic()
             self._condition.notify_all()
 
     def _on_reply(self, sample: object) -> None:
@@ -139,7 +136,6 @@ class ZenohExecutor:
             self._reject(error)
             return
         with self._condition:
-            self.last_seen_s[agent] = time.monotonic()
             if sequence != self._sequence:
                 self.late_replies += 1
                 return

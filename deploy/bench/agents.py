@@ -129,8 +129,8 @@ def _figures(values: list[float], scale: float = 1e3) -> dict[str, float]:
 def run_bench(args: argparse.Namespace) -> int:
     scenario = load_scenario(args.scenario)
     settings = scenario.mpc_settings()
-    nlp = build_transport_problem(settings, len(scenario.team), local=True).nlp
-    sizes = wire.ProblemSizes(nlp.decision.size, nlp.parameters.size, nlp.lower_constraints.size)
+    sizes = wire.ProblemSizes.of(
+        build_transport_problem(settings, len(scenario.team), local=True).nlp)
     request_bytes = len(wire.encode_request(_request(sizes), TEAM, 1, "bench"))
     print(f"porter bench agents: {args.scenario}, local NLP {sizes.decision} variables, "
           f"request {request_bytes} bytes; {args.messages} round trips; then "

@@ -18,11 +18,11 @@ SUMMARY_KEYS = ("scenario", "duration_s", "reached_goal", "falls", "final_goal_d
 
 def describe(log: LogFile) -> str:
     """Duration, topics with counts and rates, metadata and the run's summary metrics."""
-    counts, start_ns, end_ns = log.message_counts()
-    duration_s = (end_ns - start_ns) * 1e-9
-    lines = [f"{log.path}: {log.path.stat().st_size / 1e6:.2f} MB, {duration_s:.3f} s, "
-             f"{sum(counts.values())} messages on {len(counts)} topics"]
-    metadata = log.metadata()
+    record = info_record(log)
+    topics = record["topics"]
+    lines = [f"{log.path}: {record['size_bytes'] / 1e6:.2f} MB, {record['duration_s']:.3f} s, "
+             f"{record['messages']} messages on {len(topics)} topics"]
+    metadata = record["metadata"]
     run = metadata.get(RUN_METADATA, {})
     lines.append("run: " + ", ".join(f"{key} {run[key]}" for key in (
         "scenario", "seed", "backend", "controller_mode", "git_revision", "porter_version",
@@ -34,11 +34,10 @@ def describe(log: LogFile) -> str:
                      + (f", error {recorder['writer_error']}" if recorder.get("writer_error")
                         else ""))
     lines.append(f"{'topic':32s} {'messages':>9s} {'rate [Hz]':>10s}")
-    for topic in sorted(counts):
-        rate = counts[topic] / duration_s if duration_s > 0 else 0.0
-        lines.append(f"{topic:32s} {counts[topic]:9d} {rate:10.1f}")
-    lines.append("attachments: " + ", ".join(sorted(log.attachments())))
-    summary = log.summary()
+    lines.extend(f"{topic:32s} {row['messages']:9d} {row['rate_hz']:10.1f}"
+                 for topic, row in topics.items())
+    lines.append("attachments: " + ", ".join(record["attachments"]))
+    summary = record["summary"]
     if summary is None:
         lines.append("summary: none (the run ended before writing one)")
     else:

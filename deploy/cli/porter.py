@@ -10,12 +10,9 @@ import sys
 from pathlib import Path
 from typing import TYPE_CHECKING
 
-from deploy.cli.agent_command import (
-    add_agent_parser,
-    add_bench_agents_parser,
-    add_paper_parser,
-)
+from deploy.cli.agent_command import add_agent_parser, add_bench_agents_parser
 from deploy.cli.log_arguments import add_log_parsers
+from deploy.cli.paper_command import add_paper_parser
 from deploy.cli.sim_arguments import add_sim_parser
 
 if TYPE_CHECKING:

@@ -12,6 +12,7 @@ import numpy as np
 from core.nmpc.settings import MpcSettings
 from deploy.config.scenario import Scenario, load_scenario
 from deploy.paper.claims import CLAIMS, Claim, Variant
+from deploy.recording.expectations import flatten_summary
 from deploy.runtime.codegen_cache import CompiledCodeCache
 from deploy.runtime.sim_run import SimRun
 
@@ -27,13 +28,6 @@ def variant_settings(base: MpcSettings, variant: Variant) -> MpcSettings:
         return base
     return base.model_copy(update={"coupling": base.coupling.model_copy(
         update={"enabled": False})})
-
-
-def lookup(summary: dict, dotted: str) -> float:
-    value: object = summary
-    for key in dotted.split("."):
-        value = value[key]  # type: ignore[index]
-    return float(value)  # type: ignore[arg-type]
 
 
 def run_claim(claim: Claim, scenario_name: str, duration_s: float | None,
@@ -55,7 +49,7 @@ def run_claim(claim: Claim, scenario_name: str, duration_s: float | None,
             run.close()
         series = {name: list(map(float, getattr(run.metrics, name))) for name in claim.series}
         rows.append({"variant": variant.label,
-                     "metrics": {m: lookup(summary, m) for m in claim.metrics},
+                     "metrics": {m: float(flatten_summary(summary)[m]) for m in claim.metrics},
                      "paper": dict(variant.paper), "falls": summary["falls"],
                      "reached_goal": summary["reached_goal"], "min_h_m": summary["min_h_m"],
                      "duration_s": summary["duration_s"], "series": series})

@@ -24,12 +24,12 @@ def expectations_path(log_path: Path) -> Path:
     return log_path.with_suffix(".expect.json")
 
 
-def _flatten(summary: dict, prefix: str = "") -> dict[str, Any]:
+def flatten_summary(summary: dict, prefix: str = "") -> dict[str, Any]:
     flat: dict[str, Any] = {}
     for key, value in summary.items():
         name = f"{prefix}{key}"
         if isinstance(value, dict):
-            flat.update(_flatten(value, name + "."))
+            flat.update(flatten_summary(value, name + "."))
         else:
             flat[name] = value
     return flat
@@ -43,7 +43,7 @@ def check_expectations(summary: dict | None, path: Path) -> list[str]:
         return [f"{path}: cannot read expectations ({error})"]
     if summary is None:
         return [f"{path}: the log has no summary metrics to check"]
-    flat = _flatten(summary)
+    flat = flatten_summary(summary)
     failures = []
     for key, check in expectations.items():
         if key not in flat:
@@ -66,7 +66,7 @@ def expectation_margins(summary: dict | None, path: Path) -> dict[str, float]:
         expectations = json.loads(path.read_text())
     except (OSError, json.JSONDecodeError):
         return {}
-    flat = _flatten(summary or {})
+    flat = flatten_summary(summary or {})
     margins = {}
     for key, check in expectations.items():
         value = flat.get(key)
@@ -88,7 +88,7 @@ def draft_expectations(summary: dict, relative_band: float = 0.1) -> dict[str, d
     """Exact checks for flags, counts and names; ``value +- relative_band |value|`` (at least
     1e-3) for measured floats; nothing for wall-clock figures."""
     drafted: dict[str, dict] = {}
-    for key, value in _flatten(summary).items():
+    for key, value in flatten_summary(summary).items():
         if key.split(".")[0] in TIMING_KEYS or value is None:
             continue
         if isinstance(value, bool | int | str):

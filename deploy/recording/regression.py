@@ -26,11 +26,9 @@ from dataclasses import asdict, dataclass, field
 from pathlib import Path
 
 import numpy as np
-import yaml
 
 from core.locomotion.settings import WbcSettings
 from core.model.team import TeamModel
-from core.model.team_settings import TeamSettings
 from core.nmpc.admm_mpc import DistributedMpc
 from core.nmpc.centralized_mpc import CentralizedMpc
 from core.nmpc.mpc_inputs import MpcInputs
@@ -38,7 +36,7 @@ from core.nmpc.mpc_plan import MpcPlan
 from core.nmpc.nlp_solver import NlpSolution, SolveStats
 from core.nmpc.settings import MpcSettings
 from core.nmpc.warm_start import ControllerMemory
-from deploy.config.files import ConfigError, load_settings, validate_settings
+from deploy.config.files import ConfigError, load_settings
 from deploy.recording import log_format as fmt
 from deploy.recording.expectations import (
     check_expectations,
@@ -48,6 +46,7 @@ from deploy.recording.expectations import (
 )
 from deploy.recording.log_reader import LogError, LogFile
 from deploy.recording.messages import porter_log_pb2 as pb
+from deploy.recording.resimulation import logged_run
 from deploy.recording.resimulation import resimulate as resimulate_run
 from deploy.runtime.blas_kernels import GENERIC, cpu_target, host_cpu_flags
 from deploy.runtime.codegen_cache import CompiledCodeCache
@@ -96,18 +95,9 @@ def controller_from_log(log: LogFile, cache: CompiledCodeCache,
                         settings: MpcSettings | None = None
                         ) -> tuple[CentralizedMpc | DistributedMpc, TeamModel]:
     """The NMPC the log's run used, rebuilt from its attachments (serial ADMM executor)."""
-    scenario = yaml.safe_load(log.attachment_text(fmt.SCENARIO_ATTACHMENT))
-    try:  # only the team and the mode: a run may be shorter than its scenario file's check
-        team_settings = TeamSettings.model_validate({"agents": scenario["team"], "payload": {
-            "mass_kg": scenario["payload"]["mass_kg"], "size_m": scenario["payload"]["size_m"]}})
-        mode = scenario["controller"]["mode"]
-    except (KeyError, TypeError, ValueError) as error:
-        raise LogError(f"{log.path}: attached scenario is unusable ({error})") from None
-    if settings is None:
-        settings = validate_settings(yaml.safe_load(log.attachment_text(
-            fmt.MPC_SETTINGS_ATTACHMENT)), MpcSettings, source=f"{log.path}: mpc_settings")
-    team = TeamModel.from_settings(team_settings, srb_parameters)
-    if mode == "centralized":
+    scenario, settings, _ = logged_run(log, settings)
+    team = TeamModel.from_settings(scenario.team_settings(), srb_parameters)
+    if scenario.controller.mode == "centralized":
         return CentralizedMpc(team, settings, compiler=cache), team
     return DistributedMpc(team, settings, compiler=cache), team
 

@@ -50,8 +50,7 @@ def _version(package: str) -> str:
         return "absent"
 
 
-def run_metadata(scenario: Scenario, backend: str, blas_kernels: str = "unknown"
-                 ) -> dict[str, str]:
+def run_metadata(scenario: Scenario, backend: str, blas_kernels: str) -> dict[str, str]:
     """The run's identity; ``blas_kernels``: the BLASFEO target its solvers ran on (a replay
     agrees bit for bit only on the same kernels, see ``porter regress``)."""
     return {
@@ -91,8 +90,8 @@ def open_run_recorder(path: Path | str, scenario: Scenario, mpc_settings: MpcSet
                       wbc_settings: WbcSettings, backend: str,
                       settings: RecorderSettings | None = None,
                       sinks: list[Sink] | None = None,
-                      extra_attachments: dict[str, bytes] | None = None,
-                      blas_kernels: str = "unknown") -> FlightRecorder:
+                      extra_attachments: dict[str, bytes] | None = None, *,
+                      blas_kernels: str) -> FlightRecorder:
     """A flight recorder on ``path`` with the run's metadata and attachments (plus
     ``extra_attachments``, e.g. the deploy config); ``blas_kernels`` as in ``run_metadata``."""
     attachments = {**run_attachments(scenario, mpc_settings, wbc_settings),

@@ -43,7 +43,8 @@ def recorded_run(tmp_path_factory: pytest.TempPathFactory) -> tuple[Path, list, 
     logged: list = []
     recorder = open_run_recorder(path, scenario, loop.settings, loop.wbc_settings, "mujoco",
                                  RecorderSettings(warm_start_every=5),
-                                 sinks=[lambda topic, message, t: logged.append((topic, message, t))])
+                                 sinks=[lambda topic, message, t: logged.append((topic, message, t))],
+                                 blas_kernels=loop.control.cache.blas_kernels().target)
     loop.attach_recorder(recorder)
     try:
         summary = loop.run()
@@ -290,7 +291,8 @@ def test_a_failing_writer_reaches_the_loop_and_the_log_keeps_its_flushed_part(
     path = tmp_path / "run.mcap"
     loop = SimRun(scenario, CompiledCodeCache())
     recorder = open_run_recorder(path, scenario, loop.settings, loop.wbc_settings, "mujoco",
-                                 RecorderSettings(flush_interval_s=0.05, on_failure=policy))
+                                 RecorderSettings(flush_interval_s=0.05, on_failure=policy),
+                                 blas_kernels=loop.control.cache.blas_kernels().target)
     recorder._write = _DiskFull(recorder._write, after=3000)  # type: ignore[method-assign]
     loop.attach_recorder(recorder)
     try:

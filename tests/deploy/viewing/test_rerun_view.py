@@ -56,7 +56,8 @@ def porter_log(tmp_path_factory: pytest.TempPathFactory) -> Path:
         "controller": scenario.controller.model_copy(update={"executor": "serial"})})
     path = tmp_path_factory.mktemp("replay") / "narrow_passage.mcap"
     loop = SimRun(scenario, CompiledCodeCache())
-    recorder = open_run_recorder(path, scenario, loop.settings, loop.wbc_settings, "mujoco")
+    recorder = open_run_recorder(path, scenario, loop.settings, loop.wbc_settings, "mujoco",
+                                 blas_kernels=loop.control.cache.blas_kernels().target)
     loop.attach_recorder(recorder)
     summary = None
     try:
