@@ -37,6 +37,9 @@ class LinkMonitor:
     rejected: Counter[str] = field(default_factory=Counter)
     reconnections: int = 0
     last_receive_time_s: float | None = None
+    # reason -> what to tell the operator when nothing valid ever arrived and messages were
+    # rejected for that reason (e.g. a CRC the firmware may not fill in)
+    never_valid_hints: dict[str, str] = field(default_factory=dict)
     _lost: bool = False
 
     def __post_init__(self) -> None:
@@ -72,6 +75,8 @@ class LinkMonitor:
         self._lost = silent_s is not None  # the first message ever is no reconnection
         heard = ("no valid state received yet" if silent_s is None
                  else f"last valid state {silent_s:.3f} s ago")
+        hints = [hint for reason, hint in self.never_valid_hints.items()
+                 if silent_s is None and self.rejected[reason]]
         raise LinkLostError(
             f"{self.description}: {heard} (timeout {self.timeout_s} s; received {self.received},"
-            f" rejected {dict(self.rejected) or 0})")
+            f" rejected {dict(self.rejected) or 0})" + "".join(f"; {h}" for h in hints))

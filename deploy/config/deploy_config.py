@@ -44,6 +44,9 @@ class Go2Link(StrictModel):
     link_timeout_s: float = Field(0.1, gt=0, le=1.0)
     contact_threshold_n: float = Field(20.0, ge=0, le=500.0)
     foot_force_n_per_count: float = Field(1.0, gt=0, le=100.0)  # UNVERIFIED scale of the counts
+    # refuse states whose CRC-32 does not match (as unitree_sdk2_python computes it); off only
+    # for a firmware that leaves LowState_.crc unfilled (UNVERIFIED which ones do)
+    check_state_crc: bool = True
 
 
 class A1Link(StrictModel):
@@ -129,8 +132,10 @@ class PreflightConfig(StrictModel):
     start_tolerance_m: float = Field(0.3, gt=0, le=2.0)  # payload this near the scenario's start
 
 
-ROBOT_FAULTS = ("robot_silent", "robot_frozen", "robot_garbage", "robot_nan", "robot_push")
-GO2_FAULTS = ("robot_frozen", "robot_garbage", "robot_nan")  # the Go2 fake's wire faults
+ROBOT_FAULTS = ("robot_silent", "robot_frozen", "robot_garbage", "robot_nan", "robot_bad_crc",
+                "robot_push")
+# the Go2 fake's wire faults
+GO2_FAULTS = ("robot_frozen", "robot_garbage", "robot_nan", "robot_bad_crc")
 # Faults porter's own process injects into itself (``deploy.sim_backend.porter_faults``), at
 # ``at_s`` on the loop's clock; the others are the world's.
 PORTER_FAULTS = ("nmpc_failure", "recorder_failure", "loop_stall")
@@ -146,7 +151,8 @@ class SimFault(StrictModel):
     (a malformed packet beside every frame), ``robot_silent`` (``robot``'s fake stops
     publishing its state), ``robot_frozen`` (a Go2 ``robot``'s fake keeps publishing its last
     state, tick included), ``robot_garbage`` (it publishes bytes that are no ``LowState_``),
-    ``robot_nan`` (a joint angle of its state is NaN), ``robot_push`` (a 300 N sideways push on
+    ``robot_nan`` (a joint angle of its state is NaN), ``robot_bad_crc`` (its states carry a
+    wrong CRC: one bit flipped on the way), ``robot_push`` (a 300 N sideways push on
     ``robot``'s trunk for 0.4 s). Porter's own (``PORTER_FAULTS``): ``nmpc_failure`` (every NMPC
     plan from then on is a failed solve), ``recorder_failure`` (every log write fails with
     ENOSPC), ``loop_stall`` (the loop's thread hangs 0.3 s once)."""
@@ -154,8 +160,8 @@ class SimFault(StrictModel):
     at_s: float = Field(ge=0)
     kind: Literal["estop_press", "heartbeat_loss", "mocap_loss", "mocap_frozen",
                   "mocap_backwards", "mocap_foreign", "natnet_malformed",
-                  "robot_silent", "robot_frozen", "robot_garbage", "robot_nan", "robot_push",
-                  "nmpc_failure", "recorder_failure", "loop_stall"]
+                  "robot_silent", "robot_frozen", "robot_garbage", "robot_nan",
+                  "robot_bad_crc", "robot_push", "nmpc_failure", "recorder_failure", "loop_stall"]
     robot: str | None = None
 
     @model_validator(mode="after")

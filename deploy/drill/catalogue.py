@@ -70,6 +70,8 @@ def catalogue() -> list[DrillFault]:
                    _sim("robot_frozen", "go2_1")),
         DrillFault("robot go2_0 malformed LowState", stop, "robot link lost: go2_0",
                    _sim("robot_garbage", "go2_0")),
+        DrillFault("robot go2_1 LowState with a bad CRC", stop, "'crc'",
+                   _sim("robot_bad_crc", "go2_1")),
         DrillFault("robot go2_1 NaN joint angle", stop, "go2_1", _sim("robot_nan", "go2_1")),
         DrillFault("robot go2_0 pushed over (fall)", stop, "go2_0",
                    _sim("robot_push", "go2_0")),

@@ -188,7 +188,7 @@ def open_links(config: DeployConfig, clock: Clock = time.monotonic) -> TeamLinks
                 go2 = Go2Driver(
                     name, link.domain_id, config.network_interface, link.topic_prefix,
                     link.link_timeout_s, link.contact_threshold_n, link.foot_force_n_per_count,
-                    base_state_source=source, clock=clock)
+                    base_state_source=source, clock=clock, check_state_crc=link.check_state_crc)
                 drivers[name] = go2
                 if link.release_sport_mode:
                     sport_mode[name] = _release_sport_mode(go2)

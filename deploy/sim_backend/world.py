@@ -205,7 +205,7 @@ class SimWorld:
                 self.network_faults.add(fault.kind)
             elif fault.kind == "robot_push" and fault.robot is not None:
                 self.simulation.apply_push(fault.robot, np.array([0.0, 300.0, 0.0]), 0.4)
-            elif fault.kind in ("robot_frozen", "robot_garbage", "robot_nan") \
+            elif fault.kind in ("robot_frozen", "robot_garbage", "robot_nan", "robot_bad_crc") \
                     and fault.robot is not None:
                 fake = self.fakes[fault.robot]
                 if isinstance(fake, FakeGo2):  # load_deploy_config allows no other

@@ -11,7 +11,7 @@ layouts that matter:
   The bytes are identical to cyclonedds' own ``serialize()`` (tested on random messages, both
   directions).
 - ``c``: the firmware's in-memory struct (members aligned, structs padded to their alignment):
-  what Unitree's CRC-32 runs over (``LOW_CMD_CRC_FORMAT``).
+  what Unitree's CRC-32 runs over (``LOW_CMD_CRC_FORMAT``, ``LOW_STATE_CRC_FORMAT``).
 
 Fields are then read and written as NumPy views with the field's stride (or a gather where
 the stride is irregular), so a message costs a few array copies instead of hundreds of Python
@@ -34,6 +34,7 @@ from drivers.unitree.go2_dds_types import (
     HEAD,
     LEVEL_FLAG_LOW,
     LOW_CMD_CRC_WORDS,
+    LOW_STATE_CRC_WORDS,
     MOTOR_MODE_SERVO,
     LowCmd_,
     LowState_,
@@ -170,6 +171,29 @@ def _cdr_size(layout: MessageLayout) -> int:
     return size + (-size % 4)
 
 
+class _WireCrc:
+    """Unitree's CRC-32 of a message's wire bytes: each field's bytes re-laid from where they
+    sit on the wire (after the CDR header) to where they sit in the C struct, in one gather;
+    the C struct's padding stays zero; the CRC runs over its first ``words`` u32 words."""
+
+    def __init__(self, wire: MessageLayout, memory: MessageLayout, words: int) -> None:
+        leaves = list(wire.leaves)
+        self._to_memory = np.concatenate([memory.leaves[p].byte_index for p in leaves])
+        self._from_wire = np.concatenate([wire.leaves[p].byte_index for p in leaves]) + 4
+        self._memory = np.zeros(memory.size, np.uint8)
+        self._words = self._memory[:4 * words].view("<u4")
+        self._wire = wire
+
+    def of(self, data: bytes | bytearray) -> int:
+        """The CRC ``data`` (a whole sample, header included) should carry."""
+        self._memory[self._to_memory] = np.frombuffer(data, np.uint8)[self._from_wire]
+        return unitree_crc32(self._words)
+
+    def carried(self, data: bytes | bytearray) -> int:
+        """The CRC ``data`` carries."""
+        return int(self._wire.view(data, "crc", 4)[0])
+
+
 class LowCmdCodec:
     """``LowCmd_`` bytes <-> ``WireCommand`` (head 0xFE 0xEF, level flag 0xFF, CRC)."""
 
@@ -188,11 +212,7 @@ class LowCmdCodec:
                        for f in ("q", "dq", "tau", "kp", "kd")]
         self._crc = self.wire.view(self._buffer, "crc", 4)
         self._words = np.frombuffer(self._memory, "<u4", count=LOW_CMD_CRC_WORDS)
-        # every field's bytes: where they sit in the C struct <- where they sit on the wire
-        # (after the header), so a received message is re-laid for its CRC in one gather
-        leaves = list(self.wire.leaves)
-        self._to_memory = np.concatenate([self.memory.leaves[p].byte_index for p in leaves])
-        self._from_wire = np.concatenate([self.wire.leaves[p].byte_index for p in leaves]) + 4
+        self._received_crc = _WireCrc(self.wire, self.memory, LOW_CMD_CRC_WORDS)
 
     def encode(self, command: WireCommand) -> bytes:
         """The wire bytes of ``command`` with its CRC filled in."""
@@ -218,14 +238,13 @@ class LowCmdCodec:
         head = tuple(int(v) for v in self.wire.view(data, "head", 4))
         header_ok = head == HEAD and int(self.wire.view(data, "level_flag", 4)[0]) == \
             LEVEL_FLAG_LOW
-        memory = np.zeros(self.memory.size, np.uint8)  # the C struct's padding stays zero
-        memory[self._to_memory] = np.frombuffer(data, np.uint8)[self._from_wire]
-        expected = unitree_crc32(memory[:4 * LOW_CMD_CRC_WORDS].view("<u4"))
-        return command, header_ok, expected == int(self.wire.view(data, "crc", 4)[0])
+        crc_ok = self._received_crc.of(data) == self._received_crc.carried(data)
+        return command, header_ok, crc_ok
 
 
 class LowStateCodec:
-    """``LowState_`` bytes <-> ``WireState`` (what porter reads of it and a robot fills in)."""
+    """``LowState_`` bytes <-> ``WireState`` (what porter reads of it and a robot fills in,
+    CRC included)."""
 
     _FIELDS = (("q_rad", "motor_state.q"), ("dq_rad_s", "motor_state.dq"),
                ("tau_est_nm", "motor_state.tau_est"),
@@ -244,20 +263,28 @@ class LowStateCodec:
         self._views = {name: self.wire.view(self._buffer, path, 4) for name, path in self._FIELDS}
         self._foot = [self.wire.view(self._buffer, p, 4) for p in ("foot_force", "foot_force_est")]
         self._tick = self.wire.view(self._buffer, "tick", 4)
+        self._crc_view = self.wire.view(self._buffer, "crc", 4)
+        self._crc = _WireCrc(self.wire, MessageLayout(LowState_, "c"), LOW_STATE_CRC_WORDS)
 
     def encode_header(self) -> bytes:
         """The 4-byte CDR encapsulation header every sample starts with."""
         return bytes(self._buffer[:4])
 
     def encode(self, state: WireState, motor_mode: int = MOTOR_MODE_SERVO) -> bytes:
-        """The wire bytes of a robot's ``state`` (CRC 0, as porter's fakes publish it)."""
+        """The wire bytes of a robot's ``state``, its CRC filled in as the robot's."""
         for name, view in self._views.items():
             view[:] = getattr(state, name)
         for view in self._foot:
             view[:] = state.foot_force
         self._tick[0] = int(state.tick_ms) & 0xFFFFFFFF
         self.wire.write(self._buffer, "motor_state.mode", motor_mode, 4)
+        self._crc_view[0] = self._crc.of(self._buffer)
         return bytes(self._buffer)
+
+    def crc_ok(self, data: bytes) -> bool:
+        """Whether received ``data`` (size and encoding checked by ``decode``) carries the
+        CRC of its contents."""
+        return self._crc.of(data) == self._crc.carried(data)
 
     def decode(self, data: bytes) -> WireState:
         """The state in received bytes; ``ValueError`` for a wrong size or encoding."""

@@ -9,7 +9,8 @@ types (``unitree_api.msg.dds_``) follow ``unitree_sdk2``'s generic API client.
 Conversion to and from the robot-neutral wire values of ``drivers.unitree.conventions``
 (``WireState``, ``WireCommand``: 20 motor slots in Unitree order, SI units) happens here;
 ``low_cmd_crc`` packs a ``LowCmd_`` as the firmware does (812 bytes) and runs Unitree's
-CRC-32 over its first 202 u32 words.
+CRC-32 over its first 202 u32 words; ``low_state_crc`` does the same for a ``LowState_`` (1180
+bytes, 294 words), as unitree_sdk2_python's ``utils/crc.py`` packs it.
 
 No ``from __future__ import annotations`` here: cyclonedds resolves the field annotations at
 run time and cannot parse them back from strings. Without cyclonedds' mypy plugin
@@ -34,6 +35,12 @@ MOTOR_MODE_SERVO = 0x01
 LOW_CMD_CRC_FORMAT = "<4B4IH2x" + "B3x5f3I" * 20 + "4B" + "55Bx2I"
 LOW_CMD_CRC_WORDS = 202
 assert struct.calcsize(LOW_CMD_CRC_FORMAT) == 812 == 4 * (LOW_CMD_CRC_WORDS + 1)
+# The LowState_ as unitree_sdk2_python's utils/crc.py packs it for its CRC (1180 bytes, the
+# in-memory layout); the same CRC-32 over all words but the crc field.
+LOW_STATE_CRC_FORMAT = ("<4B4IH2x" + "13fb3x" + "B3x7fb3x3I" * 20 + "4BiH4b15H"
+                        + "8hI41B3xf2b2x2f4h2I")
+LOW_STATE_CRC_WORDS = 294
+assert struct.calcsize(LOW_STATE_CRC_FORMAT) == 1180 == 4 * (LOW_STATE_CRC_WORDS + 1)
 
 
 @dataclass
@@ -252,12 +259,14 @@ def low_state_from_wire(state: WireState, motor_mode: int = MOTOR_MODE_SERVO) ->
     bms = BmsState_(version_high=0, version_low=0, status=0, soc=100, current=0, cycle=0,
                     bq_ntc=[0, 0], mcu_ntc=[0, 0], cell_vol=[0] * 15)
     foot_force = [int(v) for v in state.foot_force]
-    return LowState_(head=list(HEAD), level_flag=LEVEL_FLAG_LOW, frame_reserve=0, sn=[0, 0],
-                     version=[0, 0], bandwidth=0, imu_state=imu, motor_state=motors,
-                     bms_state=bms, foot_force=foot_force, foot_force_est=foot_force,
-                     tick=int(state.tick_ms) & 0xFFFFFFFF, wireless_remote=[0] * 40,
-                     bit_flag=0, adc_reel=0.0, temperature_ntc1=0, temperature_ntc2=0,
-                     power_v=0.0, power_a=0.0, fan_frequency=[0] * 4, reserve=0, crc=0)
+    message = LowState_(head=list(HEAD), level_flag=LEVEL_FLAG_LOW, frame_reserve=0, sn=[0, 0],
+                        version=[0, 0], bandwidth=0, imu_state=imu, motor_state=motors,
+                        bms_state=bms, foot_force=foot_force, foot_force_est=foot_force,
+                        tick=int(state.tick_ms) & 0xFFFFFFFF, wireless_remote=[0] * 40,
+                        bit_flag=0, adc_reel=0.0, temperature_ntc1=0, temperature_ntc2=0,
+                        power_v=0.0, power_a=0.0, fan_frequency=[0] * 4, reserve=0, crc=0)
+    message.crc = low_state_crc(message)
+    return message
 
 
 def wire_from_low_state(msg: LowState_) -> WireState:
@@ -303,3 +312,32 @@ def low_cmd_crc(cmd: LowCmd_) -> int:
                cmd.gpio, cmd.reserve, cmd.crc]
     packed = struct.pack(LOW_CMD_CRC_FORMAT, *values)
     return unitree_crc32(np.frombuffer(packed, dtype="<u4", count=LOW_CMD_CRC_WORDS))
+
+
+def low_state_crc(state: LowState_) -> int:
+    """Unitree's CRC-32 of ``state``: packed little-endian with ``LOW_STATE_CRC_FORMAT`` (1180
+    bytes, as unitree_sdk2_python packs it), first 294 u32 words (the crc field excluded).
+    The SDK packs the temperatures as signed bytes ("b") and the fan frequencies as int16
+    ("h") where the IDL has unsigned types: the same bytes, so they are reinterpreted here
+    rather than refused above the signed range."""
+    def signed(value: int, bits: int = 8) -> int:
+        return value - (1 << bits) if value >= 1 << (bits - 1) else value
+
+    imu, bms = state.imu_state, state.bms_state
+    values: list[int | float] = [*state.head, state.level_flag, state.frame_reserve, *state.sn,
+                                 *state.version, state.bandwidth, *imu.quaternion,
+                                 *imu.gyroscope, *imu.accelerometer, *imu.rpy,
+                                 signed(imu.temperature)]
+    for motor in state.motor_state:
+        values += [motor.mode, motor.q, motor.dq, motor.ddq, motor.tau_est, motor.q_raw,
+                   motor.dq_raw, motor.ddq_raw, signed(motor.temperature), motor.lost,
+                   *motor.reserve]
+    values += [bms.version_high, bms.version_low, bms.status, bms.soc, bms.current, bms.cycle,
+               *map(signed, bms.bq_ntc), *map(signed, bms.mcu_ntc), *bms.cell_vol,
+               *state.foot_force, *state.foot_force_est, state.tick, *state.wireless_remote,
+               state.bit_flag, state.adc_reel, signed(state.temperature_ntc1),
+               signed(state.temperature_ntc2), state.power_v,
+               state.power_a, *(signed(v, 16) for v in state.fan_frequency), state.reserve,
+               state.crc]
+    packed = struct.pack(LOW_STATE_CRC_FORMAT, *values)
+    return unitree_crc32(np.frombuffer(packed, dtype="<u4", count=LOW_STATE_CRC_WORDS))

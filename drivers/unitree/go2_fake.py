@@ -85,7 +85,8 @@ class FakeGo2(RealTimeFake):
         self.states_published = 0
         self.frozen = False  # True: republish the last state unchanged (see publish_state)
         # fault injection: "garbage" publishes bytes that are no LowState_, "nan" a state with
-        # a joint angle that is not a number (see publish_state)
+        # a joint angle that is not a number, "bad_crc" states with one bit of the CRC flipped
+        # (see publish_state)
         self.corrupt: str | None = None
         self._tick_ms = -1
         self._last_state_bytes: bytes | None = None
@@ -127,6 +128,10 @@ class FakeGo2(RealTimeFake):
         wire = wire_state_from_measurement(measurement, self.foot_force_n_per_count,
                                            tick_ms=self._tick_ms)
         self._last_state_bytes = self._states.encode(wire)
+        if self.corrupt == "bad_crc":
+            data = bytearray(self._last_state_bytes)
+            data[-1] ^= 0x01  # the crc field is the sample's last 4 bytes (no padding after)
+            self._last_state_bytes = bytes(data)
         write_raw(self._state_writer, self._last_state_bytes)
         self.states_published += 1
 

@@ -12,10 +12,12 @@ from drivers.unitree.conventions import WireCommand, WireState
 from drivers.unitree.go2_cdr import CDR_HEADER, LowCmdCodec, LowStateCodec, MessageLayout, idl_fields
 from drivers.unitree.go2_dds_types import (
     LOW_CMD_CRC_FORMAT,
+    LOW_STATE_CRC_FORMAT,
     LowCmd_,
     LowState_,
     low_cmd_crc,
     low_cmd_from_wire,
+    low_state_crc,
     low_state_from_wire,
     wire_from_low_cmd,
     wire_from_low_state,
@@ -72,6 +74,27 @@ def test_c_layout_is_the_firmware_struct_the_crc_covers() -> None:
     assert MessageLayout(LowCmd_, "cdr").leaves["motor_cmd.q"].offsets[0] == 24
 
 
+def test_state_crc_covers_the_sdk_packing_and_every_field() -> None:
+    """On random ``LowState_`` (every field random, as a robot could fill it), the codec's CRC
+    check agrees with the CRC of unitree_sdk2_python's packing (``LOW_STATE_CRC_FORMAT``), and
+    one flipped bit in any field's bytes fails it."""
+    assert MessageLayout(LowState_, "c").size == struct.calcsize(LOW_STATE_CRC_FORMAT) == 1180
+    rng = np.random.default_rng(11)
+    codec = LowStateCodec()
+    wire = MessageLayout(LowState_, "cdr")
+    covered = 4 + np.concatenate([leaf.byte_index for path, leaf in wire.leaves.items()
+                                  if path != "crc"])  # field bytes, not CDR padding
+    for _ in range(10):
+        sample, _ = _random(LowState_, rng)
+        sample.crc = low_state_crc(sample)
+        data = bytearray(sample.serialize())
+        assert codec.crc_ok(bytes(data))
+        position = int(rng.choice(covered))
+        data[position] ^= 1 << int(rng.integers(0, 8))
+        assert not codec.crc_ok(bytes(data))
+    assert not codec.crc_ok(low_state_from_wire(WireState()).serialize()[:-4] + bytes(4))
+
+
 def _command(rng: np.random.Generator) -> WireCommand:
     return WireCommand(mode=rng.integers(0, 256, 20).astype(np.uint8),
                        q_rad=rng.normal(size=20), dq_rad_s=rng.normal(size=20),
@@ -106,7 +129,8 @@ def test_state_codec_matches_cyclonedds() -> None:
                           foot_force=rng.integers(-2**15, 2**15, 4).astype(np.int16),
                           tick_ms=int(rng.integers(0, 2**32)))
         reference = low_state_from_wire(state).serialize()
-        assert codec.encode(state) == reference
+        assert codec.encode(state) == reference  # the CRC as the SDK computes it included
+        assert codec.crc_ok(reference)
         decoded, expected = codec.decode(reference), wire_from_low_state(
             LowState_.deserialize(reference))
         for name in ("q_rad", "dq_rad_s", "tau_est_nm", "quaternion_wxyz", "gyroscope_rad_s",

@@ -34,6 +34,7 @@ from drivers.unitree.go2_dds_types import (
     LowState_,
     low_cmd_crc,
     low_cmd_from_wire,
+    low_state_crc,
     low_state_from_wire,
 )
 from drivers.unitree.go2_driver import Go2Driver, cyclonedds_config, open_participant, topic_name
@@ -194,16 +195,47 @@ def test_implausible_states_are_rejected(link):
     valid = wire_state_from_measurement(simulation.robot_driver(ROBOT).read(), 1.0)
     message = low_state_from_wire(valid)
     message.motor_state[0].q = float("nan")
+    message.crc = low_state_crc(message)  # well-formed, CRC right, contents impossible
     intruder.write(message)
     message = low_state_from_wire(valid)
     message.imu_state.quaternion = [0.0, 0.0, 0.0, 0.0]
+    message.crc = low_state_crc(message)
     intruder.write(message)
     message = low_state_from_wire(valid)
     message.motor_state[4].dq = 1e5
+    message.crc = low_state_crc(message)
     intruder.write(message)
     assert driver.poll() == 0
     assert dict(driver.link.rejected) == {"non-finite": 1, "implausible": 2}
     np.testing.assert_allclose(driver.read().position_rad, before.position_rad, rtol=1e-6)
+
+
+def test_a_state_with_a_wrong_crc_is_rejected_unless_the_check_is_off(link):
+    """A LowState_ whose contents changed after its CRC was computed (a bit flipped on the way)
+    counts for nothing; a driver with ``check_state_crc`` off takes it (for a firmware that
+    leaves the field unfilled), and one that never heard a valid state says which setting."""
+    simulation, fake, driver, prefix = link
+    driver.read()
+    fake.corrupt = "bad_crc"
+    for _ in range(3):
+        fake.publish_state()
+    assert _deliver(driver, 3) == 0 and driver.link.rejected == {"crc": 3}
+    unchecked = Go2Driver("unchecked", DOMAIN_ID, topic_prefix=prefix, check_state_crc=False)
+    fake.publish_state()
+    assert unchecked.wait_for_state(after_s=0.0, timeout_s=2.0)
+    assert unchecked.link.rejected_total == 0
+    fresh = Go2Driver("fresh", DOMAIN_ID, topic_prefix=prefix)
+    deadline = time.monotonic() + 2.0
+    while fresh.link.rejected["crc"] == 0:
+        assert time.monotonic() < deadline, "no state arrived"
+        fake.publish_state()
+        fresh.poll()
+        time.sleep(0.002)
+    with pytest.raises(LinkLostError, match="failed Unitree's CRC.*check_state_crc"):
+        fresh.read()
+    fake.corrupt = None
+    fake.publish_state()
+    assert _deliver(driver, 1) == 1
 
 
 def test_link_lost_then_recovered(link):
