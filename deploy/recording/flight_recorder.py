@@ -8,7 +8,15 @@ is dropped and counted; the count goes into the log as an event and into the ``r
 metadata at the end. ``close`` (also reached on Ctrl-C, exceptions and SIGTERM through the
 callers' ``finally``) drains the queue, writes the summary metadata and the MCAP footer.
 
-Sinks (e.g. the live Rerun view) see every message in the writer thread, off the loop.
+Derivers (e.g. ``deploy.recording.robot_scene.LinkTransforms``) turn logged messages into
+more messages, and sinks (e.g. the live Rerun view) see every message, both in the writer
+thread, off the loop; a deriver or sink that raises is removed with a WARNING event.
+
+Log times are on the wall clock: the file's log time of a message is ``time_origin_ns`` (the
+Unix time of the run's time 0, in the ``clock`` metadata) plus the run time it was logged at,
+so viewers show the day of the run; porter's messages keep the run time in their ``time_s``,
+Foxglove messages' ``timestamp`` fields are shifted like the log time (``fmt.on_log_clock``),
+and ``LogFile`` gives run times back. Sinks and derivers see run times.
 """
 
 from __future__ import annotations
@@ -27,16 +35,20 @@ from pydantic import Field
 
 from core.model.strict_model import StrictModel
 from deploy.recording.log_format import (
+    CLOCK_METADATA,
     EVENTS,
     FOXGLOVE_LOG,
     PROFILE,
     SUMMARY_METADATA,
     foxglove_log,
+    on_log_clock,
     to_nanoseconds,
 )
 from deploy.recording.messages import porter_log_pb2 as pb
 
-Sink = Callable[[str, Any, int], None]  # (topic, protobuf message, log time [ns])
+Sink = Callable[[str, Any, int], None]  # (topic, protobuf message, run time [ns])
+# (topic, message, run time [ns]) -> further (topic, message) to log at the same time
+Deriver = Callable[[str, Any, int], Iterable[tuple[str, Any]]]
 
 
 class RecorderSettings(StrictModel):
@@ -62,8 +74,11 @@ class FlightRecorder:
     def __init__(self, path: Path | str, settings: RecorderSettings | None = None,
                  metadata: dict[str, dict[str, str]] | None = None,
                  attachments: dict[str, bytes] | None = None,
-                 sinks: Iterable[Sink] = ()) -> None:
+                 sinks: Iterable[Sink] = (), derivers: Iterable[Deriver] = (),
+                 time_origin_ns: int | None = None) -> None:
         self.path = Path(path)
+        # the Unix time [ns] of the run's time 0: now, unless given (tests, re-recordings)
+        self.time_origin_ns = time.time_ns() if time_origin_ns is None else time_origin_ns
         self.settings = settings or RecorderSettings()
         self.path.parent.mkdir(parents=True, exist_ok=True)
         self._stream = open(self.path, "wb")  # noqa: SIM115 -- closed in close()
@@ -73,8 +88,10 @@ class FlightRecorder:
         self._writer.start(profile=PROFILE, library="porter flight recorder")
         for name, data in (metadata or {}).items():
             self._writer.add_metadata(name, data)
+        self._writer.add_metadata(CLOCK_METADATA, {"time_origin_ns": str(self.time_origin_ns)})
         for name, content in (attachments or {}).items():
-            self._writer.add_attachment(0, 0, name, _media_type(name), content)
+            self._writer.add_attachment(self.time_origin_ns, self.time_origin_ns, name,
+                                        _media_type(name), content)
         self._writer.flush()
         self._stream.flush()
         # A deque: append/popleft are atomic under the GIL, so the loop's side takes no lock
@@ -83,6 +100,7 @@ class FlightRecorder:
         self._queue: deque[tuple[str, Any, int]] = deque()
         self._closing = threading.Event()
         self._sinks = list(sinks)
+        self._derivers = list(derivers)
         self._channels: dict[str, int] = {}
         self._schemas: dict[str, int] = {}
         self._sequence: dict[str, int] = {}
@@ -187,20 +205,34 @@ class FlightRecorder:
             self._closing.wait(self.settings.poll_interval_s)
 
     def _write(self, topic: str, message: Any, log_time_ns: int) -> None:
-        self._add(topic, message, log_time_ns)
+        messages = [(topic, message)]
         if topic == EVENTS:
-            self._add(FOXGLOVE_LOG, foxglove_log(message), log_time_ns)
-        for sink in list(self._sinks):
+            messages.append((FOXGLOVE_LOG, foxglove_log(message)))
+        for deriver in list(self._derivers):
             try:
-                sink(topic, message, log_time_ns)
-            except Exception as error:  # a viewer going away must not stop the recording
-                self._sinks.remove(sink)
-                self._write(EVENTS, pb.Event(time_s=log_time_ns * 1e-9, level=pb.Event.WARNING,
-                                             source="recorder", text=f"sink removed: {error}"),
-                            log_time_ns)
+                derived = list(deriver(topic, message, log_time_ns))
+                if derived:
+                    messages.extend(derived)
+                    time.sleep(0)  # hand the GIL back to the loop after a deriver's work
+            except Exception as error:  # a derived view must not stop the recording
+                self._derivers.remove(deriver)
+                self._warn(f"deriver removed: {error!r}", log_time_ns)
+        for item_topic, item in messages:
+            for sink in list(self._sinks):
+                try:
+                    sink(item_topic, item, log_time_ns)
+                except Exception as error:  # a viewer going away must not stop the recording
+                    self._sinks.remove(sink)
+                    self._warn(f"sink removed: {error}", log_time_ns)
+            self._add(item_topic, item, log_time_ns)
+
+    def _warn(self, text: str, log_time_ns: int) -> None:
+        self._write(EVENTS, pb.Event(time_s=log_time_ns * 1e-9, level=pb.Event.WARNING,
+                                     source="recorder", text=text), log_time_ns)
 
     def _add(self, topic: str, message: Any, log_time_ns: int) -> None:
-        """One message into the file (its channel and schema registered on first use)."""
+        """One message into the file at run time ``log_time_ns`` (its channel and schema
+        registered on first use; a Foxglove message's timestamps moved to the log's clock)."""
         channel = self._channels.get(topic)
         if channel is None:
             name = type(message).DESCRIPTOR.full_name
@@ -211,9 +243,11 @@ class FlightRecorder:
             self._channels[topic] = channel
         sequence = self._sequence.get(topic, 0)
         self._sequence[topic] = sequence + 1
-        self._writer.add_message(channel_id=channel, log_time=log_time_ns,
-                                 data=message.SerializeToString(), publish_time=log_time_ns,
-                                 sequence=sequence)
+        file_time_ns = self.time_origin_ns + log_time_ns
+        self._writer.add_message(channel_id=channel, log_time=file_time_ns,
+                                 data=on_log_clock(message, self.time_origin_ns)
+                                 .SerializeToString(),
+                                 publish_time=file_time_ns, sequence=sequence)
         self.written += 1
         self._last_time_ns = max(self._last_time_ns, log_time_ns)
 
@@ -222,8 +256,7 @@ class FlightRecorder:
         text = (f"recorder queue full: {dropped - self._reported_dropped} messages dropped "
                 f"({dropped} in total)")
         self._reported_dropped = dropped
-        self._write(EVENTS, pb.Event(time_s=self._last_time_ns * 1e-9, level=pb.Event.WARNING,
-                                     source="recorder", text=text), self._last_time_ns)
+        self._warn(text, self._last_time_ns)
 
 
 def _media_type(name: str) -> str:

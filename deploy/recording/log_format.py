@@ -3,9 +3,11 @@
 One MCAP file per run, protobuf encoding. Foxglove's well-known schemas where one fits
 (``/tf`` FrameTransforms of the ground truth, ``/mocap/<body>`` PoseInFrame, ``/obstacles``
 SceneUpdate), porter's own messages (``deploy/messages/porter_log.proto``) for the rest.
-Log times are the run's clock in nanoseconds: simulated time in simulation, time since the
-start of the run on robots. Quaternions are (w, x, y, z) in porter messages and (x, y, z, w)
-in Foxglove ones: converted here, once.
+Run time is the run's clock: simulated time in simulation, time since the start of the run
+on robots; porter's messages carry it (``time_s``). The file's log times are on the wall clock
+(the run's start + run time, ``CLOCK_METADATA``; ``deploy.recording.flight_recorder``), and
+so are the Foxglove messages' timestamps (``on_log_clock``). Quaternions are (w, x, y, z) in
+porter messages and (x, y, z, w) in Foxglove ones: converted here, once.
 """
 
 from __future__ import annotations
@@ -28,13 +30,16 @@ from core.model.obstacles import Obstacle
 from deploy.recording.messages import porter_log_pb2 as pb
 from drivers.interfaces import JointCommand, MocapFrame, RobotMeasurement
 
-LOG_FORMAT_VERSION = 1  # bump when a message or topic changes meaning
+LOG_FORMAT_VERSION = 2  # bump when a message or topic changes meaning
+# 1: log times were run times (no clock record); still read, with time origin 0
+READABLE_LOG_FORMAT_VERSIONS = ("1", "2")
 PROFILE = "porter"
 WORLD_FRAME = "world"
 
 # metadata records
 RUN_METADATA = "porter"  # format version, versions, machine, scenario
 SUMMARY_METADATA = "summary"  # the run's summary metrics (JSON under key "json")
+CLOCK_METADATA = "clock"  # time_origin_ns: Unix time [ns] of run time 0 (log time - run time)
 
 # attachments
 SCENARIO_ATTACHMENT = "scenario.yaml"
@@ -78,6 +83,24 @@ def mocap_topic(body: str) -> str:
 
 def to_nanoseconds(time_s: float) -> int:
     return max(int(round(time_s * 1e9)), 0)
+
+
+def on_log_clock(message: Any, time_origin_ns: int) -> Any:
+    """A Foxglove ``message`` with its timestamps moved from run time to the log's clock (+
+    ``time_origin_ns``), as a copy; porter's own messages as they are (they keep run time)."""
+    if time_origin_ns == 0 or not message.DESCRIPTOR.full_name.startswith("foxglove."):
+        return message
+    original, message = message, type(message)()
+    message.CopyFrom(original)
+    fields = message.DESCRIPTOR.fields_by_name
+    stamps = [message.timestamp] if "timestamp" in fields else []
+    for name in ("transforms", "entities", "deletions"):
+        if name in fields:
+            stamps += [item.timestamp for item in getattr(message, name)]
+    for stamp in stamps:
+        stamp.seconds, stamp.nanos = divmod(
+            stamp.seconds * 1_000_000_000 + stamp.nanos + time_origin_ns, 1_000_000_000)
+    return message
 
 
 def timestamp(time_s: float) -> Timestamp:

@@ -17,7 +17,14 @@ from mcap.stream_reader import StreamReader
 from mcap.writer import CompressionType, Writer
 from mcap_protobuf.decoder import DecoderFactory
 
-from deploy.recording.log_format import LOG_FORMAT_VERSION, PROFILE, RUN_METADATA, SUMMARY_METADATA
+from deploy.recording.log_format import (
+    CLOCK_METADATA,
+    LOG_FORMAT_VERSION,
+    PROFILE,
+    READABLE_LOG_FORMAT_VERSIONS,
+    RUN_METADATA,
+    SUMMARY_METADATA,
+)
 
 MAGIC = b"\x89MCAP0\r\n"
 
@@ -28,6 +35,8 @@ class LogError(ValueError):
 
 @dataclass(frozen=True)
 class DecodedMessage:
+    """A message of a log at its run time (the file's log time less the time origin)."""
+
     topic: str
     log_time_ns: int
     message: Any
@@ -38,7 +47,9 @@ class DecodedMessage:
 
 
 class LogFile:
-    """A complete porter log. Opening checks the magic, the index and the format version."""
+    """A complete porter log. Opening checks the magic, the index and the format version.
+    Times given back are run times; ``time_origin_ns`` is the Unix time [ns] of run time 0
+    (0 for version-1 logs, whose log times were run times)."""
 
     def __init__(self, path: Path | str) -> None:
         self.path = Path(path)
@@ -59,10 +70,13 @@ class LogFile:
         header = self._reader_call(lambda reader: reader.get_header())
         if header.profile != PROFILE:
             raise LogError(f"{self.path}: not a porter log (MCAP profile {header.profile!r})")
-        version = self.metadata().get(RUN_METADATA, {}).get("log_format_version")
-        if version != str(LOG_FORMAT_VERSION):
+        metadata = self.metadata()
+        version = metadata.get(RUN_METADATA, {}).get("log_format_version")
+        self.time_origin_ns = int(metadata.get(CLOCK_METADATA, {}).get("time_origin_ns", 0))
+        if version not in READABLE_LOG_FORMAT_VERSIONS:
             raise LogError(f"{self.path}: written with log format version {version}, this "
-                           f"porter reads version {LOG_FORMAT_VERSION}; replay it with the porter "
+                           f"porter reads versions {', '.join(READABLE_LOG_FORMAT_VERSIONS)} "
+                           f"(writes {LOG_FORMAT_VERSION}); replay it with the porter "
                            "revision in its metadata (`porter log info`)")
 
     def _reader_call(self, action: Any) -> Any:
@@ -95,7 +109,7 @@ class LogFile:
         return None if record is None else json.loads(record["json"])
 
     def message_counts(self) -> tuple[dict[str, int], int, int]:
-        """Messages per topic and the first and last log time [ns], from the index."""
+        """Messages per topic and the first and last run time [ns], from the index."""
         def read(reader: Any) -> tuple[dict[str, int], int, int]:
             summary = reader.get_summary()
             if summary is None or summary.statistics is None:
@@ -103,7 +117,8 @@ class LogFile:
             counts = {summary.channels[c].topic: n
                       for c, n in summary.statistics.channel_message_counts.items()}
             stats = summary.statistics
-            return counts, stats.message_start_time, stats.message_end_time
+            return (counts, stats.message_start_time - self.time_origin_ns,
+                    stats.message_end_time - self.time_origin_ns)
         return self._reader_call(read)
 
     def messages(self, topics: list[str] | None = None) -> Iterator[DecodedMessage]:
@@ -113,7 +128,8 @@ class LogFile:
                 reader = make_reader(stream, decoder_factories=[DecoderFactory()])
                 for _, channel, message, decoded in reader.iter_decoded_messages(
                         topics=topics, log_time_order=True):
-                    yield DecodedMessage(channel.topic, message.log_time, decoded)
+                    yield DecodedMessage(channel.topic, message.log_time - self.time_origin_ns,
+                                         decoded)
         except LogError:
             raise
         except Exception as error:  # mcap, zstd, protobuf decode: any damage reads the same

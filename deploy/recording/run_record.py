@@ -26,6 +26,7 @@ from deploy.recording.log_format import (
     SCENARIO_ATTACHMENT,
     WBC_SETTINGS_ATTACHMENT,
 )
+from deploy.recording.robot_scene import ROBOT_SCENE, LinkTransforms, robot_scene
 from drivers.robot_descriptions import robot_description
 
 PACKAGES = ("casadi", "pin", "mujoco", "numpy", "daqp", "mcap", "protobuf", "rerun-sdk",
@@ -96,8 +97,13 @@ def open_run_recorder(path: Path | str, scenario: Scenario, mpc_settings: MpcSet
     ``extra_attachments``, e.g. the deploy config); ``blas_kernels`` as in ``run_metadata``."""
     attachments = {**run_attachments(scenario, mpc_settings, wbc_settings),
                    **(extra_attachments or {})}
-    return FlightRecorder(path, settings, {RUN_METADATA: run_metadata(scenario, backend, blas_kernels)},
-                          attachments, sinks or [])
+    robot_types = {agent.name: agent.robot_type for agent in scenario.team}
+    recorder = FlightRecorder(path, settings,
+                              {RUN_METADATA: run_metadata(scenario, backend, blas_kernels)},
+                              attachments, sinks or [], [LinkTransforms(robot_types)])
+    # the robots' shapes once, at run time 0, for Foxglove (deploy.recording.robot_scene)
+    recorder.log(ROBOT_SCENE, robot_scene(robot_types), 0.0)
+    return recorder
 
 
 def safe_file_stem(name: str) -> str:

@@ -23,6 +23,7 @@ from deploy.recording import log_format as fmt
 from deploy.recording.flight_recorder import FlightRecorder, RecorderSettings
 from deploy.recording.log_reader import LogError, LogFile, recover
 from deploy.recording.messages import porter_log_pb2 as pb
+from deploy.recording.robot_scene import LINK_TF, ROBOT_SCENE
 from deploy.recording.run_record import open_run_recorder
 from deploy.runtime.codegen_cache import CompiledCodeCache
 from deploy.runtime.sim_run import SimRun
@@ -31,36 +32,19 @@ REPOSITORY = Path(__file__).resolve().parents[3]
 PORTER = [sys.executable, "-m", "deploy.cli"]
 
 
-@pytest.fixture(scope="module")
-def recorded_run(tmp_path_factory: pytest.TempPathFactory) -> tuple[Path, list, dict]:
-    """A 0.4 s two-Go2 run recorded to MCAP; also every (topic, message, time) as logged."""
-    scenario = load_scenario("two_go2")
-    scenario = scenario.model_copy(update={
-        "duration_s": 0.4, "controller": scenario.controller.model_copy(
-            update={"executor": "serial"})})
-    path = tmp_path_factory.mktemp("log") / "run.mcap"
-    loop = SimRun(scenario, CompiledCodeCache())
-    logged: list = []
-    recorder = open_run_recorder(path, scenario, loop.settings, loop.wbc_settings, "mujoco",
-                                 RecorderSettings(warm_start_every=5),
-                                 sinks=[lambda topic, message, t: logged.append((topic, message, t))],
-                                 blas_kernels=loop.control.cache.blas_kernels().target)
-    loop.attach_recorder(recorder)
-    try:
-        summary = loop.run()
-    finally:
-        loop.close()
-        recorder.close(summary)
-    return path, logged, summary
-
-
 def test_every_channel_reads_back_equal(recorded_run: tuple[Path, list, dict]) -> None:
+    """Read with the mcap library alone: every message the sinks saw (the loop's, the events
+    again as foxglove.Log, the derived link transforms) is in the file, in order, at the wall
+    clock's log time of its run time; Foxglove timestamps moved alike, porter's kept."""
     path, logged, summary = recorded_run
     with open(path, "rb") as stream:
         reader = make_reader(stream, decoder_factories=[DecoderFactory()])
-        read_all = [(channel.topic, decoded, message.log_time, schema.name)
+        origin_ns = int({m.name: m.metadata for m in reader.iter_metadata()}
+                        [fmt.CLOCK_METADATA]["time_origin_ns"])
+        read_all = [(channel.topic, decoded, message.log_time - origin_ns, schema.name)
                     for schema, channel, message, decoded in reader.iter_decoded_messages(
                         log_time_order=False)]
+    assert 0 < time.time_ns() - origin_ns < 3600e9  # the run started within the last hour
     # every event is written twice: porter's Event and a foxglove.Log for Foxglove's Log panel
     events = [(m, t) for topic, m, t in logged if topic == fmt.EVENTS]
     logs = [(m, t, schema) for topic, m, t, schema in read_all if topic == fmt.FOXGLOVE_LOG]
@@ -68,20 +52,25 @@ def test_every_channel_reads_back_equal(recorded_run: tuple[Path, list, dict]) -
     levels = {0: 2, 1: 3, 2: 4}  # porter INFO/WARNING/ERROR -> foxglove.Log INFO/WARNING/ERROR
     for (log_message, time_ns, schema), (event, event_time) in zip(logs, events, strict=True):
         assert schema == "foxglove.Log" and time_ns == event_time
+        assert log_message.timestamp.ToNanoseconds() == origin_ns + event_time
         assert (log_message.message, log_message.name) == (event.text, event.source)
         assert log_message.level == levels[event.level]
-    read = [(topic, m, t) for topic, m, t, _ in read_all if topic != fmt.FOXGLOVE_LOG]
-    assert len(read) == len(logged)
-    for (topic, decoded, time_ns), (topic_logged, message, time_logged) in zip(
-            read, logged, strict=True):
+    assert len(read_all) == len(logged)
+    for (topic, decoded, time_ns, _), (topic_logged, message, time_logged) in zip(
+            read_all, logged, strict=True):
         assert (topic, time_ns) == (topic_logged, time_logged)
+        expected = fmt.on_log_clock(message, origin_ns)  # Foxglove's stamps on the log clock
+        if expected is message:  # porter's own messages keep the run time
+            assert getattr(message, "time_s", time_logged * 1e-9) == pytest.approx(
+                time_logged * 1e-9, abs=0.01)
+        message = expected
         # the decoder builds its classes from the file's own schema: compare field by field
         assert MessageToDict(decoded) == MessageToDict(message), topic
         assert decoded.SerializeToString() == message.SerializeToString(), topic
-    topics = {topic for topic, _, _ in read}
-    expected = {fmt.TF, fmt.OBSTACLES, fmt.NMPC_INPUTS, fmt.NMPC_WARM_START, fmt.NMPC_UPDATE,
-                fmt.ADMM, fmt.CBF, fmt.PAYLOAD_ESTIMATE, fmt.GROUND_TRUTH, fmt.LOOP_TIMING,
-                fmt.EVENTS, "/mocap/payload"}
+    topics = {topic for topic, _, _, _ in read_all}
+    expected = {fmt.TF, LINK_TF, ROBOT_SCENE, fmt.FOXGLOVE_LOG, fmt.OBSTACLES, fmt.NMPC_INPUTS,
+                fmt.NMPC_WARM_START, fmt.NMPC_UPDATE, fmt.ADMM, fmt.CBF, fmt.PAYLOAD_ESTIMATE,
+                fmt.GROUND_TRUTH, fmt.LOOP_TIMING, fmt.EVENTS, "/mocap/payload"}
     for robot in ("go2_0", "go2_1"):
         expected |= {fmt.robot_topic(robot, kind) for kind in ("state", "command", "wbc",
                                                                 "wrench")}
@@ -90,6 +79,7 @@ def test_every_channel_reads_back_equal(recorded_run: tuple[Path, list, dict]) -
     log = LogFile(path)
     assert log.summary() == json.loads(json.dumps(summary))
     counts, start_ns, end_ns = log.message_counts()
+    assert start_ns == 0 and end_ns == pytest.approx(0.4e9, abs=0.01e9)  # run times again
     assert counts[fmt.NMPC_UPDATE] == summary["nmpc_updates"] == 24
     assert counts[fmt.robot_topic("go2_0", "state")] == 200  # 500 Hz for 0.4 s
     assert counts[fmt.NMPC_WARM_START] == 5  # every 5th of 24 updates
@@ -217,7 +207,7 @@ def test_bad_files_get_clear_errors(tmp_path: Path, recorded_run: tuple[Path, li
 def test_a_log_from_another_format_version_is_refused(tmp_path: Path) -> None:
     path = tmp_path / "future.mcap"
     FlightRecorder(path, metadata={fmt.RUN_METADATA: {"log_format_version": "99"}}).close()
-    with pytest.raises(LogError, match="format version 99.*reads version"):
+    with pytest.raises(LogError, match="format version 99.*reads versions"):
         LogFile(path)
     assert main(["log", "info", str(path)]) == 2
 
