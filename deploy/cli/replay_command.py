@@ -31,6 +31,15 @@ def replay_target(args: argparse.Namespace) -> str:
     return "spawn"
 
 
+def robot_types(log: LogFile) -> dict[str, str]:
+    """Robot name -> type (``go2``, ``a1``) from the attached scenario, if any."""
+    try:
+        scenario = yaml.safe_load(log.attachment_text(SCENARIO_ATTACHMENT)) or {}
+        return {agent["name"]: agent["robot_type"] for agent in scenario.get("team", [])}
+    except (LogError, yaml.YAMLError, KeyError, TypeError, AttributeError):
+        return {}
+
+
 def coupling_points(log: LogFile) -> dict[str, tuple[list[float], list[float]]]:
     """Per robot (point in payload, point in robot) [m] from the attached scenario, if any."""
     try:
@@ -72,7 +81,8 @@ def run_replay(args: argparse.Namespace) -> int:
         robot_names = [name for name in run.get("robots", "").split(",") if name]
         recording = open_recording(target, f"{run.get('scenario', 'porter')} "
                                            f"({Path(args.log).name})", robot_names)
-        view = RerunLogView(recording, robot_names, coupling_points(log))
+        view = RerunLogView(recording, robot_names, coupling_points(log),
+                            robot_types=robot_types(log))
         recording.log(paths.RUN_INFO, rr.TextDocument(
             run_document(log), media_type=rr.MediaType.MARKDOWN), static=True)
         for item in log.messages():

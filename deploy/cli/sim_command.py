@@ -122,4 +122,5 @@ def live_view_sinks(args: argparse.Namespace, scenario: Scenario) -> list:
         return []
     from deploy.viewing.rerun_view import live_sink
 
-    return [live_sink(args.rerun, scenario.name)]
+    return [live_sink(args.rerun, scenario.name,
+                      {agent.name: agent.robot_type for agent in scenario.team})]

@@ -71,7 +71,9 @@ def blueprint(robot_names: Sequence[str] = ()) -> rrb.Blueprint:
         rrb.TimeSeriesView(origin=LOOP_TIMES, name="Loop timing [s]"),
         grid_columns=2, name="Time series")
     left = rrb.Vertical(
-        rrb.Spatial3DView(origin=WORLD, name="Team (world)"),
+        # origin "/": the robots' URDF models live beside "world" (one top-level entity each,
+        # deploy.viewing.robot_models), placed in it through their frames
+        rrb.Spatial3DView(origin="/", name="Team (world)"),
         rrb.Tabs(rrb.TextLogView(origin=EVENTS, name="Events"),
                  rrb.TextDocumentView(origin=RUN_INFO, name="Run")),
         row_shares=[3, 1])

@@ -6,8 +6,9 @@ recorder's writer thread (``live_sink``, ``porter sim --rerun``), and logs them 
 ``rr.RecordingStream`` on the ``sim_time`` timeline (ADMM iterations also on
 ``admm_iteration``). Entity paths and the layout are in ``deploy.viewing.layout``. Poses come
 from the ground truth (``/tf``) where the log has it, otherwise from the robots' own state and
-the MoCap payload pose (hardware). Topics without a view (commands, NMPC inputs, warm starts)
-are skipped.
+the MoCap payload pose (hardware). Robots whose type is known (``robot_types``) are drawn as
+their URDF models, legs moved by the logged joint angles (``deploy.viewing.robot_models``),
+others as SRB boxes. Topics without a view (commands, NMPC inputs, warm starts) are skipped.
 """
 
 from __future__ import annotations
@@ -23,6 +24,7 @@ from core.model.rotations import rotation_from_quaternion_wxyz
 from deploy.recording import log_format as fmt
 from deploy.recording.messages import porter_log_pb2 as pb
 from deploy.viewing import layout as paths
+from deploy.viewing.robot_models import RobotModels
 from deploy.viewing.series import SeriesLogger
 
 PAYLOAD_BOX_TOPIC = "/payload/box"
@@ -41,13 +43,16 @@ class RerunLogView:
     ``robot_names``: the team in agent order (learned from the topics when not given);
     ``coupling_points_m``: per robot (point in payload frame, point in robot frame) [m], for
     the coupling segments and wrench arrows (payload centre and robot base without);
-    ``force_scale_m_per_n``: arrow length per newton.
+    ``force_scale_m_per_n``: arrow length per newton; ``robot_types``: robot -> type
+    (``go2``, ``a1``) for the URDF models.
     """
 
     def __init__(self, recording: rr.RecordingStream, robot_names: Sequence[str] = (),
                  coupling_points_m: Mapping[str, tuple[Sequence[float], Sequence[float]]]
-                 | None = None, force_scale_m_per_n: float = 0.005) -> None:
+                 | None = None, force_scale_m_per_n: float = 0.005,
+                 robot_types: Mapping[str, str] | None = None) -> None:
         self.recording = recording
+        self.models = RobotModels(recording, robot_types or {})
         self.robot_names = list(robot_names)
         self.coupling_points_m = {name: (np.asarray(p, float), np.asarray(r, float))
                                   for name, (p, r) in (coupling_points_m or {}).items()}
@@ -114,7 +119,7 @@ class RerunLogView:
             entity = paths.PAYLOAD
         else:
             entity = paths.robot_entity(frame, "body")
-            if frame not in self._bodies_logged:
+            if frame not in self._bodies_logged and not self.models.has(frame):
                 self._bodies_logged.add(frame)
                 size = A1_TRUNK_SIZE_M if frame.lower().startswith("a1") else GO2_TRUNK_SIZE_M
                 self.recording.log(entity, rr.Boxes3D(sizes=[size], colors=[self._color(frame)],
@@ -139,6 +144,8 @@ class RerunLogView:
     def _robot_state(self, robot: str, message: pb.RobotState) -> None:
         if robot not in self._tf_frames:
             self._set_pose(robot, message.position_in_world_m, message.quaternion_wxyz)
+        self.models.state(robot, self._time_ns or 0, message.position_in_world_m,
+                          message.quaternion_wxyz, message.joint_position_rad)
 
     def _coupling_point(self, robot: str, on_payload: bool) -> np.ndarray | None:
         frame = PAYLOAD_NAME if on_payload else robot
@@ -306,9 +313,10 @@ class LiveSink:
     """A flight-recorder sink (``(topic, message, log_time_ns)``) feeding a ``RerunLogView``;
     called from the recorder's writer thread only. ``close`` flushes the stream."""
 
-    def __init__(self, recording: rr.RecordingStream) -> None:
+    def __init__(self, recording: rr.RecordingStream,
+                 robot_types: Mapping[str, str] | None = None) -> None:
         self.recording = recording
-        self.view = RerunLogView(recording)
+        self.view = RerunLogView(recording, robot_types=robot_types)
 
     def __call__(self, topic: str, message: Any, log_time_ns: int) -> None:
         self.view.handle(topic, message, log_time_ns)
@@ -318,6 +326,7 @@ class LiveSink:
         self.recording.disconnect()
 
 
-def live_sink(target: str, recording_name: str) -> LiveSink:
+def live_sink(target: str, recording_name: str,
+              robot_types: Mapping[str, str] | None = None) -> LiveSink:
     """``porter sim --rerun TARGET``: stream the run to Rerun while it is recorded."""
-    return LiveSink(open_recording(target, recording_name))
+    return LiveSink(open_recording(target, recording_name), robot_types)

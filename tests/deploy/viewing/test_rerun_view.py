@@ -85,7 +85,20 @@ def test_replay_writes_the_scene_and_the_time_series(porter_log: Path, tmp_path:
     entities = rrd_entities(out)
     for robot in ROBOTS:
         body = entities[f"/world/robots/{robot}/body"]
-        assert {"Boxes3D:half_sizes", "Transform3D:translation"} <= body.components
+        assert "Transform3D:translation" in body.components
+        assert "Boxes3D:half_sizes" not in body.components  # drawn as its URDF model instead
+        # the URDF's meshes, under the robot's model entity, each in its link's frame
+        meshes = [e for path, e in entities.items() if path.startswith(f"/model_{robot}/")
+                  and "Asset3D:blob" in e.components]
+        assert len(meshes) >= 13  # Go2: base and 3 visual meshes per leg, plus collisions
+        # the root placed in the world and the 12 leg joints moved at 50 Hz per robot
+        states = counts[fmt.robot_topic(robot, "state")]
+        pose = entities[f"/model_{robot}_pose"]
+        assert {"Transform3D:parent_frame", "Transform3D:child_frame"} <= pose.components
+        assert pose.rows == pytest.approx(states / 10, abs=1)
+        joints = [e for path, e in entities.items()
+                  if path.startswith(f"/model_{robot}_joints/")]
+        assert len(joints) == 12 and all(e.rows == pose.rows for e in joints)
         assert entities[f"/world/robots/{robot}/foot_targets"].rows == counts[
             fmt.robot_topic(robot, "wbc")]
         assert "Arrows3D:vectors" in entities[f"/world/robots/{robot}/contact_forces"].components
