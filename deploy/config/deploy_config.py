@@ -73,7 +73,8 @@ class MocapConfig(StrictModel):
     server_address: str = "127.0.0.1"
     local_address: str = "127.0.0.1"  # interface to bind / join the multicast group on
     command_port: int = Field(COMMAND_PORT, ge=0, le=65535)
-    data_port: int = Field(DATA_PORT, ge=0, le=65535)
+    data_port: int = Field(DATA_PORT, ge=0, le=65535)  # multicast only (unicast frames come
+    # back to the socket that sent CONNECT, as from Motive)
     multicast: bool = False
     multicast_group: str = MULTICAST_GROUP
     bodies: dict[str, str] = {}

@@ -112,8 +112,8 @@ def _mocap_checks(config: DeployConfig, links: TeamLinks) -> list[PreflightCheck
                              f"{client.server_info.application_name} at {server}")]
     frame = client.latest()
     if frame is None:
-        return [*checks, PreflightCheck("MoCap frames", False, f"no frame on data port "
-                                        f"{client.data_port} ({client.counters.packets_rejected}"
+        return [*checks, PreflightCheck("MoCap frames", False, f"no frame on port "
+                                        f"{client.receive_port} ({client.counters.packets_rejected}"
                                         " packets rejected)")]
     wanted = tracker.bodies
     missing = [f"{name} (rigid body {body!r})" for name, body in wanted.items()

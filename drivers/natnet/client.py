@@ -9,8 +9,10 @@ caller detects MoCap loss (``is_stale``, ``check``).
 
 Modes (``NatNetClientConfig.multicast``):
 - unicast: the client sends CONNECT to the server's command port and a KEEPALIVE every
-  ``keepalive_period_s``; frames arrive on the data socket, bound to
-  (``local_address``, ``data_port``).
+  ``keepalive_period_s`` from one socket, and the frames arrive on that socket: Motive sends
+  them to the address its requests came from (as OptiTrack's sample client expects: its
+  unicast data socket is bound to an ephemeral port it never announces). ``data_port`` is
+  not used; the data socket is bound to an ephemeral port and still read.
 - multicast: the data socket is bound to (group, ``data_port``) and joins the group on the
   interface ``local_address``; commands still go unicast to the command port.
 Sockets bind to ``local_address`` only (loopback by default), never to all interfaces.
@@ -72,7 +74,7 @@ class NatNetClientConfig:
 
     server_address: str = "127.0.0.1"
     command_port: int = COMMAND_PORT
-    data_port: int = DATA_PORT
+    data_port: int = DATA_PORT  # multicast only (unicast frames come to the command socket)
     multicast: bool = False
     multicast_group: str = MULTICAST_GROUP
     local_address: str = "127.0.0.1"  # interface to bind (and join the group) on
@@ -138,7 +140,7 @@ class NatNetClient:
     def _bind_data_socket(self) -> None:
         config, data = self.config, self._data_socket
         if not config.multicast:
-            data.bind((config.local_address, config.data_port))
+            data.bind((config.local_address, 0))
             return
         data.setsockopt(socket.SOL_SOCKET, socket.SO_REUSEADDR, 1)
         data.bind((config.multicast_group, config.data_port))
@@ -154,8 +156,16 @@ class NatNetClient:
 
     @property
     def data_port(self) -> int:
-        """The UDP port the data socket is bound to (``config.data_port`` unless that was 0)."""
+        """The UDP port the data socket is bound to (multicast: ``config.data_port`` unless
+        that was 0; unicast: an ephemeral one)."""
         return int(self._data_socket.getsockname()[1])
+
+    @property
+    def receive_port(self) -> int:
+        """The UDP port frames arrive on: the command socket's in unicast (where the server
+        sends them), the data socket's in multicast."""
+        sock = self._data_socket if self.config.multicast else self._command_socket
+        return int(sock.getsockname()[1])
 
     @property
     def body_ids(self) -> dict[str, int]:

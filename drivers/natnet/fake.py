@@ -2,8 +2,11 @@
 
 ``FakeNatNetServer`` speaks the same wire protocol as Motive (``drivers.natnet.protocol``):
 it answers CONNECT with SERVERINFO and REQUEST_MODELDEF with MODELDEF, tracks KEEPALIVE and
-DISCONNECT per client, and streams FRAMEOFDATA either unicast to each connected client (its
-IP, the configured ``data_port``) or to the multicast group (sent on the ``host`` interface).
+DISCONNECT per client, and streams FRAMEOFDATA either unicast to each connected client — to
+the address and port its CONNECT and keep-alives came from, as Motive does (OptiTrack's sample
+client binds its unicast data socket to an ephemeral port it never announces and receives the
+frames on the socket that sent CONNECT) — or to the multicast group on ``data_port`` (sent on
+the ``host`` interface).
 
 Poses come from ``pose_source() -> {name: (position [m] (3,), quaternion wxyz (4,))}``, world
 frame, e.g. ``simulation_pose_source(TeamSimulation)``: robot bases by robot name, the
@@ -63,7 +66,8 @@ class FakeNatNetServer:
     ``body_ids`` maps names to streaming ids; by default the names of the first
     ``pose_source()`` call get ids 1, 2, ... in order, and later names get the next ids.
     ``timestamp_source`` gives the frame timestamp [s] (default: seconds since start on
-    ``clock``). Clients silent for ``client_timeout_s`` stop receiving unicast frames.
+    ``clock``). Clients silent for ``client_timeout_s`` stop receiving unicast frames;
+    ``data_port`` is the multicast port (and what SERVERINFO announces).
     """
 
     def __init__(self, pose_source: PoseSource, *, body_ids: Mapping[str, int] | None = None,
@@ -237,7 +241,7 @@ class FakeNatNetServer:
             return [(self.multicast_group, self.data_port)]
         now_s = self._clock()
         with self._lock:
-            return [(address[0], self.data_port) for address, heard_s in self.clients.items()
+            return [address for address, heard_s in self.clients.items()
                     if now_s - heard_s <= self.client_timeout_s]
 
     def _deliver_late(self) -> None:

@@ -191,15 +191,18 @@ def pack_message(message_id: int, payload: bytes = b"") -> bytes:
 
 
 def unpack_message(packet: bytes) -> tuple[int, bytes]:
-    """(message id, payload) of one datagram; its size field must match the datagram."""
+    """(message id, payload) of one datagram; its size field must match the datagram, except
+    for trailing NUL bytes after the payload (OptiTrack's sample client ends every request,
+    a keep-alive of size 0 included, with a NUL it does not count)."""
     if len(packet) < HEADER.size:
         raise NatNetProtocolError(f"packet of {len(packet)} bytes is shorter than the header",
                                   "truncated")
     message_id, size = HEADER.unpack_from(packet)
-    if len(packet) - HEADER.size != size:
+    carried = len(packet) - HEADER.size
+    if carried < size or packet[HEADER.size + size:].strip(b"\0"):
         raise NatNetProtocolError(f"message {message_id}: header says {size} payload bytes, "
-                                  f"datagram carries {len(packet) - HEADER.size}", "truncated")
-    return int(message_id), bytes(packet[HEADER.size:])
+                                  f"datagram carries {carried}", "truncated")
+    return int(message_id), bytes(packet[HEADER.size:HEADER.size + size])
 
 
 # --- commands and server info ----------------------------------------------------------------

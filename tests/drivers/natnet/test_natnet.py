@@ -19,6 +19,7 @@ from drivers.mujoco.simulation import TeamSimulation
 from drivers.natnet.client import MocapLostError, NatNetClient, NatNetClientConfig, NatNetError
 from drivers.natnet.fake import FakeNatNetServer, simulation_pose_source
 from drivers.natnet.protocol import (
+    COMMAND_PORT,
     FrameOfData,
     MessageId,
     NatNetProtocolError,
@@ -146,7 +147,9 @@ def test_pose_round_trip_names_from_modeldef_and_quaternion_order(link):
     server, client = link
     assert isinstance(client, MocapSource)
     assert client.body_ids == server.body_ids == {"robot": 1, "payload": 2}
-    assert client.server_info is not None and client.server_info.data_port == client.data_port
+    assert client.server_info is not None and client.server_info.data_port == server.data_port
+    # unicast: frames come back to the socket that sent CONNECT, not to a data port
+    assert client.receive_port != client.data_port
     assert server.connects == 1 and server.keepalives_received >= 1
     frame = _publish_and_wait(server, client)
     assert set(frame.poses) == {"robot", "payload"}
@@ -322,3 +325,64 @@ def test_a_frame_from_an_older_time_is_no_fresh_frame(link):
 def test_an_unresolvable_server_address_is_a_clear_error():
     with pytest.raises(NatNetError, match="server_address 'no-such-mocap.invalid'"):
         NatNetClient(NatNetClientConfig(server_address="no-such-mocap.invalid"))
+
+
+# --- interoperability with OptiTrack's own behaviour (unicast) -------------------------------
+def test_the_fake_serves_a_client_written_like_optitracks_sample():
+    """OptiTrack's NatNet SDK sample client (NatNetClient.py), unicast: its data socket is bound
+    to an ephemeral port it never announces; it sends CONNECT ("Ping") and keep-alives from
+    its command socket and reads frames there. Built from raw bytes here, not porter's code."""
+    poses = {"robot": POSES["robot"]}
+    with FakeNatNetServer(lambda: poses, command_port=0, data_port=_free_udp_port()) as server, \
+            socket.socket(socket.AF_INET, socket.SOCK_DGRAM) as command, \
+            socket.socket(socket.AF_INET, socket.SOCK_DGRAM) as data:
+        command.bind(("127.0.0.1", 0))
+        data.bind(("127.0.0.1", 0))  # the sample's unicast data socket: never used
+        command.settimeout(WAIT_S)
+        target = ("127.0.0.1", server.command_port)
+        command.sendto(struct.pack("<HH", 0, 5) + b"Ping\0", target)  # NAT_CONNECT
+        message_id, _ = struct.unpack_from("<HH", command.recv(0x10000))
+        assert message_id == 1  # NAT_SERVERINFO, to the command socket
+        command.sendto(struct.pack("<HH", 10, 0) + b"\0", target)  # NAT_KEEPALIVE
+        assert _wait_until(lambda: server.keepalives_received == 1)
+        received = []
+        for _ in range(3):
+            server.publish_frame()
+            packet = command.recv(0x10000)
+            assert struct.unpack_from("<H", packet)[0] == 7  # NAT_FRAMEOFDATA
+            received.append(unpack_frame_of_data(unpack_message(packet)[1]))
+        assert [f.frame_number for f in received] == [1, 2, 3]
+        (body,) = received[0].rigid_bodies
+        np.testing.assert_allclose(body.position_m, POSES["robot"][0], atol=1e-6)
+        data.setblocking(False)
+        with pytest.raises(BlockingIOError):  # nothing was sent to a data port
+            data.recv(0x10000)
+
+
+def test_the_client_receives_from_a_motive_style_unicast_server():
+    """A server that behaves as Motive does in unicast: it answers on its command port and
+    sends frames, from another socket, to the address the client's requests came from (it
+    knows no data port of the client's)."""
+    with socket.socket(socket.AF_INET, socket.SOCK_DGRAM) as server, \
+            socket.socket(socket.AF_INET, socket.SOCK_DGRAM) as server_data:
+        server.bind(("127.0.0.1", 0))
+        server_data.bind(("127.0.0.1", 0))
+        server.settimeout(WAIT_S)
+        config = NatNetClientConfig(command_port=server.getsockname()[1], data_port=COMMAND_PORT)
+        with NatNetClient(config) as client:
+            requester = None
+            while not client.is_ready():
+                packet, requester = server.recvfrom(0x10000)
+                message_id, _ = unpack_message(packet)
+                if message_id == MessageId.CONNECT:
+                    server.sendto(pack_server_info(ServerInfo("Motive")), requester)
+                elif message_id == MessageId.REQUEST_MODELDEF:
+                    server.sendto(pack_model_definitions([RigidBodyDescription("robot", 3)]),
+                                  requester)
+            assert requester is not None and requester[1] == client.receive_port
+            position, (w, x, y, z) = POSES["robot"]
+            frame = FrameOfData(1, (RigidBodySample(3, tuple(position), (x, y, z, w)),))
+            server_data.sendto(pack_frame_of_data(frame), requester)
+            assert client.wait_for_frame(WAIT_S, ["robot"])
+            np.testing.assert_allclose(client.latest().poses["robot"][1], QUATERNION_WXYZ,
+                                       atol=1e-6)
