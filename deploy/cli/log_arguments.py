@@ -25,7 +25,11 @@ def add_log_parsers(commands: argparse._SubParsersAction, info_handler: Handler,
     recover.add_argument("-o", "--output", help="recovered file (default LOG.recovered.mcap)")
     recover.set_defaults(handler=recover_handler)
 
-    regress = commands.add_parser("regress", help="re-run logged NMPC decisions and compare")
+    regress = commands.add_parser(
+        "regress", help="re-run logged NMPC decisions and compare",
+        description="Replay every logged NMPC decision and compare it with the log, then "
+        "simulate the run again and check its metrics against LOG.expect.json. Exit 1 on a "
+        "difference.")
     regress.add_argument("logs", nargs="+", metavar="LOG", help="LOG.mcap files")
     regress.add_argument("--settings", metavar="YAML",
                          help="MpcSettings overriding the log's attached ones (what-if)")

@@ -214,8 +214,11 @@ def build_parser() -> argparse.ArgumentParser:
     parser.add_argument("--version", action="version", version=f"porter {_porter_version()}")
     commands = parser.add_subparsers(dest="command", required=True)
 
-    drill = commands.add_parser("drill", help="the fault suite on the sim backend: every fault "
-                                "detected, only damping after detection, logs readable")
+    drill = commands.add_parser(
+        "drill", help="the fault suite on the sim backend: every fault detected, only damping "
+        "after detection, logs readable",
+        description="Inject each fault into a short porter deploy on the sim backend and judge "
+        "it from outside; prints one table row per fault. Exit 0 when all were handled.")
     drill.add_argument("faults", nargs="*", help="run the faults whose names contain these "
                        "(default: all)")
     drill.add_argument("--keep", help="folder for each fault's config, log and output "
@@ -305,8 +308,11 @@ def build_parser() -> argparse.ArgumentParser:
 
     add_sim_parser(commands, _sim, positive_number, count)
 
-    deploy = commands.add_parser("deploy", help="run the team on robots (or on the simulated "
-                                 "world behind the same drivers)")
+    deploy = commands.add_parser(
+        "deploy", help="run the team on robots (or on the simulated world behind the same "
+        "drivers)", description="Pre-flight, stand up, arm (asks unless --yes), carry the "
+        "payload, sit down; any fault safe-stops the team. Exit 0 done, 3 safe stop, 130 "
+        "stopped by the operator.")
     deploy.add_argument("--config", required=True, metavar="CONFIG.yaml",
                         help="deploy config (deploy/config/deployments/*.yaml) or a shipped "
                              "config's name")
@@ -322,7 +328,9 @@ def build_parser() -> argparse.ArgumentParser:
                         help="no flight log (--backend sim only)")
     deploy.set_defaults(handler=_deploy)
 
-    replay = commands.add_parser("replay", help="play a flight log in Rerun")
+    replay = commands.add_parser(
+        "replay", help="play a flight log in Rerun", description="Show a flight log in "
+        "Rerun: the robots' models, payload, obstacles and plans in 3D beside the time series.")
     replay.add_argument("log", help="LOG.mcap written by porter")
     target = replay.add_mutually_exclusive_group()
     target.add_argument("--rrd", metavar="FILE", help="write a Rerun recording instead of "
