@@ -26,6 +26,7 @@ from deploy.agents import wire
 from deploy.agents.zenoh_session import concrete_endpoint, open_session
 from deploy.bench.sim import bench_scenario
 from deploy.config.scenario import load_scenario
+from deploy.reports.table import Column, render_table
 from deploy.runtime.codegen_cache import CompiledCodeCache
 
 TEAM = "bench"
@@ -144,15 +145,17 @@ def run_bench(args: argparse.Namespace) -> int:
             summary = bench_scenario(args.scenario, args.duration, executor, settings, cache)
             loops[executor].append(summary)
             updates[executor].append(summary["nmpc_update_ms"]["median"])
-    print(f"{'':28}{'median ms':>10}{'p95 ms':>9}{'p99 ms':>9}")
+    cells = []
     for executor, label in (("pipe", "round trip, pipe"), ("zenoh", "round trip, Zenoh")):
         f = trips[executor]
-        print(f"{label:28}{f['median']:>10.3f}{f['p95']:>9.3f}{f['p99']:>9.3f}")
+        cells.append([label, f"{f['median']:.3f}", f"{f['p95']:.3f}", f"{f['p99']:.3f}"])
     for executor, label in (("process", "ADMM update, pipe executor"),
                             ("zenoh", "ADMM update, Zenoh agents")):
         median = float(np.median(updates[executor]))
         p95 = float(np.median([s["nmpc_update_ms"]["p95"] for s in loops[executor]]))
-        print(f"{label:28}{median:>10.2f}{p95:>9.2f}{'':>9}")
+        cells.append([label, f"{median:.2f}", f"{p95:.2f}", ""])
+    print(render_table(["", *(Column(n, "right") for n in ("median ms", "p95 ms", "p99 ms"))],
+                       cells))
     gap = float(np.median(updates["zenoh"]) - np.median(updates["process"]))
     print(f"Zenoh - pipe, ADMM update median: {gap:+.2f} ms (target within 1.5 ms); update "
           "figures are the median over repeats of each run's median (p95 likewise)")

@@ -23,6 +23,7 @@ from typing import Any
 import yaml
 
 from deploy.config.deploy_config import config_path
+from deploy.reports.table import Column, render_table
 
 RUN_TIMEOUT_S = 900.0
 
@@ -92,30 +93,29 @@ def run_bench(config: str, time_scales: list[float], runs: int,
     return rows
 
 
-def _number(value: float | None, width: int, digits: int) -> str:
-    return f"{'-':>{width}}" if value is None else f"{value:>{width}.{digits}f}"
+def _number(value: float | None, digits: int) -> str:
+    return "-" if value is None else f"{value:.{digits}f}"
 
 
 def format_table(rows: list[dict[str, Any]]) -> str:
-    header = (f"{'config':<12} {'scale':>5} {'run s':>5} {'wbc Hz':>6} {'ratio':>5} "
-              f"{'jit p50':>7} {'jit p99':>7} {'busy p50':>8} {'nmpc Hz':>7} {'ratio':>5} "
-              f"{'jit p50':>7} {'jit p99':>7} {'upd p50':>7} {'upd p99':>7} {'miss':>4}  outcome")
-    lines = [header, "-" * len(header)]
+    cells = []
     for row in rows:
         wbc, nmpc = row["wbc"], row["nmpc"]
-        lines.append(
-            f"{row['config']:<12} {row['time_scale']:>5.2f} {_number(row['run_s'], 5, 1)} "
-            f"{_number(wbc.get('rate_hz'), 6, 0)} {_number(row['wbc_rate_ratio'], 5, 2)} "
-            f"{_number(wbc.get('jitter_p50_ms'), 7, 3)} {_number(wbc.get('jitter_p99_ms'), 7, 3)} "
-            f"{_number(wbc.get('busy_p50_ms'), 8, 3)} {_number(nmpc.get('rate_hz'), 7, 1)} "
-            f"{_number(row['nmpc_rate_ratio'], 5, 2)} {_number(nmpc.get('jitter_p50_ms'), 7, 2)} "
-            f"{_number(nmpc.get('jitter_p99_ms'), 7, 2)} {_number(nmpc.get('busy_p50_ms'), 7, 1)} "
-            f"{_number(nmpc.get('busy_p99_ms'), 7, 1)} {row['nmpc_deadline_misses']:>4}  "
-            f"{row['outcome']}")
-    lines.append("ms and Hz in simulated time; ratio = achieved / nominal rate; jit = |period - "
-                 "nominal|; busy = work per WBC tick; upd = NMPC update time; miss = updates "
-                 "over 1/60 s")
-    return "\n".join(lines)
+        cells.append([
+            row["config"], f"{row['time_scale']:.2f}", _number(row["run_s"], 1),
+            _number(wbc.get("rate_hz"), 0), _number(row["wbc_rate_ratio"], 2),
+            _number(wbc.get("jitter_p50_ms"), 3), _number(wbc.get("jitter_p99_ms"), 3),
+            _number(wbc.get("busy_p50_ms"), 3), _number(nmpc.get("rate_hz"), 1),
+            _number(row["nmpc_rate_ratio"], 2), _number(nmpc.get("jitter_p50_ms"), 2),
+            _number(nmpc.get("jitter_p99_ms"), 2), _number(nmpc.get("busy_p50_ms"), 1),
+            _number(nmpc.get("busy_p99_ms"), 1), str(row["nmpc_deadline_misses"]),
+            row["outcome"]])
+    numbers = [Column(name, "right") for name in (
+        "scale", "run s", "wbc Hz", "ratio", "jit p50", "jit p99", "busy p50", "nmpc Hz",
+        "ratio", "jit p50", "jit p99", "upd p50", "upd p99", "miss")]
+    return render_table(["config", *numbers, "outcome"], cells, [
+        "ms and Hz in simulated time; ratio = achieved / nominal rate; jit = |period - "
+        "nominal|; busy = work per WBC tick; upd = NMPC update time; miss = updates over 1/60 s"])
 
 
 STAGES = ("read", "estimate", "nmpc", "check", "control", "filter", "send", "record", "total")
@@ -123,28 +123,27 @@ STAGES = ("read", "estimate", "nmpc", "check", "control", "filter", "send", "rec
 
 def format_budget(rows: list[dict[str, Any]]) -> str:
     """CPU-s per simulated second by process, and the tick's stages [ms wall, p50 / p99]."""
-    lines = [f"{'config':<12} {'scale':>5} {'porter':>6} {'nmpc':>6} {'workers':>7} "
-             f"{'world':>6} {'total':>6}   CPU-s per simulated s over RUNNING (porter: the "
-             "loop's process; nmpc: its process; workers: the ADMM workers, summed)"]
+    cpu_cells = []
     for row in rows:
         cpu = row.get("cpu_per_running_s") or {}
         workers = sum(v for k, v in cpu.items() if k.startswith("porter-admm"))
         nmpc = cpu.get("porter-nmpc", 0.0 if cpu else None)
-        lines.append(f"{row['config']:<12} {row['time_scale']:>5.2f} "
-                     f"{_number(cpu.get('porter'), 6, 2)} {_number(nmpc, 6, 2)} "
-                     f"{_number(workers if cpu else None, 7, 2)} "
-                     f"{_number(cpu.get('porter-sim-world'), 6, 2)} "
-                     f"{_number(sum(cpu.values()) if cpu else None, 6, 2)}")
-    lines.append("")
-    header = f"{'config':<12} {'scale':>5} " + " ".join(f"{s:>13}" for s in STAGES)
-    lines += [header, "-" * len(header)]
+        cpu_cells.append([row["config"], f"{row['time_scale']:.2f}", _number(cpu.get("porter"), 2),
+                          _number(nmpc, 2), _number(workers if cpu else None, 2),
+                          _number(cpu.get("porter-sim-world"), 2),
+                          _number(sum(cpu.values()) if cpu else None, 2)])
+    cpu_table = render_table(
+        ["config", *(Column(name, "right") for name in (
+            "scale", "porter", "nmpc", "workers", "world", "total"))], cpu_cells,
+        ["CPU-s per simulated s over RUNNING (porter: the loop's process; nmpc: its process; "
+         "workers: the ADMM workers, summed)"])
+    stage_cells = []
     for row in rows:
         stages = row.get("tick_stages_wall") or {}
-        cells = []
-        for stage in STAGES:
-            value = stages.get(stage)
-            cells.append(f"{value['p50_ms']:>6.3f}/{value['p99_ms']:<6.3f}"
-                         if isinstance(value, dict) else f"{'-':>13}")
-        lines.append(f"{row['config']:<12} {row['time_scale']:>5.2f} " + " ".join(cells))
-    lines.append("tick stages: wall ms per 500 Hz tick while RUNNING, both robots, p50/p99")
-    return "\n".join(lines)
+        stage_cells.append([row["config"], f"{row['time_scale']:.2f}", *(
+            f"{stages[s]['p50_ms']:.3f}/{stages[s]['p99_ms']:.3f}"
+            if isinstance(stages.get(s), dict) else "-" for s in STAGES)])
+    stage_table = render_table(
+        ["config", Column("scale", "right"), *(Column(s, "right") for s in STAGES)],
+        stage_cells, ["tick stages: wall ms per 500 Hz tick while RUNNING, both robots, p50/p99"])
+    return f"{cpu_table}\n\n{stage_table}"

@@ -43,6 +43,7 @@ from cyclonedds.topic import Topic
 from cyclonedds.util import duration
 
 from deploy.bench.driver_peers import A1, GO2, STAMP, PeerSpec, serve
+from deploy.reports.table import Column, render_table
 from deploy.sim_backend.backend import free_udp_port
 from drivers.can.bus import EstopMonitor, ForceTorqueSensors
 from drivers.can.fake import FakeCanNode
@@ -298,20 +299,16 @@ def run_bench(unitree_samples: int = 2000, stream_samples: int = 600,
 
 
 def format_table(rows: list[dict[str, Any]]) -> str:
-    header = (f"{'link':<14} {'measured':<34} {'n':>5} {'lost':>4} {'median':>7} {'p95':>7} "
-              f"{'p99':>7} {'max':>7} {'jitter':>7} {'raw med':>8} {'raw p95':>8} "
-              f"{'ratio':>6}")
-    lines = [header, "-" * len(header)]
-    for row in rows:
-        lines.append(
-            f"{row['link']:<14} {row['measured']:<34} {row['samples']:>5} {row['lost']:>4} "
-            f"{row['median_ms']:>7.3f} {row['p95_ms']:>7.3f} {row['p99_ms']:>7.3f} "
-            f"{row['max_ms']:>7.3f} {row['jitter_ms']:>7.3f} {row['raw_median_ms']:>8.3f} "
-            f"{row['raw_p95_ms']:>8.3f} {row['ratio']:>6.2f}")
-    lines.append("ms on time.monotonic; jitter = standard deviation; raw = the same transport "
-                 "without porter (pre-built messages, nothing decoded); ratio = median / raw "
-                 "median")
-    return "\n".join(lines)
+    cells = [[row["link"], row["measured"], str(row["samples"]), str(row["lost"]),
+              *(f"{row[key]:.3f}" for key in ("median_ms", "p95_ms", "p99_ms", "max_ms",
+                                              "jitter_ms", "raw_median_ms", "raw_p95_ms")),
+              f"{row['ratio']:.2f}"] for row in rows]
+    numbers = [Column(name, "right") for name in (
+        "n", "lost", "median", "p95", "p99", "max", "jitter", "raw med", "raw p95", "ratio")]
+    return render_table(["link", "measured", *numbers], cells, [
+        "ms on time.monotonic; jitter = standard deviation; raw = the same transport without "
+        "porter (pre-built messages, nothing decoded); ratio = median / raw median"])
+
 
 
 def write_json(rows: list[dict[str, Any]], counters: dict[str, Any], path: Path) -> None:

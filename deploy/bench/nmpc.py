@@ -26,6 +26,7 @@ from core.plant.closed_loop import ClosedLoopResult, run_closed_loop
 from core.plant.standard_scenarios import standard_scenario
 from deploy.bench.rti_fidelity import RtiFidelity, rti_fidelity
 from deploy.nmpc_runtime.process_executor import ProcessExecutor
+from deploy.reports.table import Column, render_table
 from deploy.runtime.codegen_cache import CompiledCodeCache
 from drivers.robot_descriptions import srb_parameters
 
@@ -202,10 +203,10 @@ def run_bench(agent_counts: list[int], solvers: list[str], duration_s: float, pa
 
 def format_table(rows: list[BenchRow]) -> str:
     """Table I layout plus local NLP time and the ratios measured in this run."""
-    header = (f"{'n_A':>3} {'mode':<12} {'solver':<20} {'vars':>5} {'iters':>6} "
-              f"{'upd mean':>9} {'std':>6} {'median':>7} {'p95':>7} {'cpu med':>7} "
-              f"{'local med':>9} {'dist/cent':>9} {'ref/this':>8} {'today/this':>10}")
-    lines = [header, "-" * len(header)]
+    number = [Column(name, "right") for name in (
+        "vars", "iters", "upd mean", "std", "median", "p95", "cpu med", "local med",
+        "dist/cent", "ref/this", "today/this")]
+    cells = []
     for row in rows:
         cent = next((r for r in rows if r.agents == row.agents and r.mode == "centralized"
                      and r.solver == row.solver), None)
@@ -221,16 +222,16 @@ def format_table(rows: list[BenchRow]) -> str:
                    if row.local_ms and today and today is not row else "")
         local = f"{row.local_ms['median']:.2f}" if row.local_ms else ""
         u = row.update_ms
-        lines.append(f"{row.agents:>3} {row.mode:<12} {row.solver:<20} {row.variables:>5} "
-                     f"{row.iterations_mean:>6.1f} {u['mean']:>9.2f} {u['std']:>6.2f} "
-                     f"{u['median']:>7.2f} {u['p95']:>7.2f} {row.cpu_ms['median']:>7.2f} "
-                     f"{local:>9} {ratio:>9} {speedup:>8} {cheaper:>10}")
-    lines.append("times in ms; 'cpu med' = median CPU time per update summed over the processes "
-                 "(ADMM workers included); 'ref/this' = ipopt-reference local NLP median / this "
-                 "local NLP median; 'dist/cent' = mean update-time ratio against the same solver's "
-                 "centralized row; 'today/this' = local NLP median of today's fatrop path "
-                 "(CasADi's generic BLASFEO, same run) / this local NLP median")
-    return "\n".join(lines)
+        cells.append([str(row.agents), row.mode, row.solver, str(row.variables),
+                      f"{row.iterations_mean:.1f}", f"{u['mean']:.2f}", f"{u['std']:.2f}",
+                      f"{u['median']:.2f}", f"{u['p95']:.2f}", f"{row.cpu_ms['median']:.2f}",
+                      local, ratio, speedup, cheaper])
+    return render_table([Column("n_A", "right"), "mode", "solver", *number], cells, [
+        "times in ms; 'cpu med' = median CPU time per update summed over the processes (ADMM "
+        "workers included); 'ref/this' = ipopt-reference local NLP median / this local NLP "
+        "median; 'dist/cent' = mean update-time ratio against the same solver's centralized "
+        "row; 'today/this' = local NLP median of today's fatrop path (CasADi's generic "
+        "BLASFEO, same run) / this local NLP median"])
 
 
 def format_accuracy(checks: list[AccuracyCheck]) -> str:

@@ -20,6 +20,7 @@ from pathlib import Path
 
 from core.nmpc.settings import BrakingSettings, MpcSettings, SafetySettings
 from deploy.config.scenario import Scenario
+from deploy.reports.table import Column, render_table
 from deploy.runtime.codegen_cache import CompiledCodeCache
 from deploy.runtime.sim_run import SimRun
 
@@ -123,21 +124,22 @@ def outcome(summary: dict) -> str:
 
 
 def format_table(rows: list[dict]) -> str:
-    header = (f"{'case':<22} {'n':>2} {'sim s':>6} {'outcome':<22} {'min h [m]':>9} "
-              f"{'relaxed':>7} {'max slack [m]':>13} {'braking [s]':>11}  stop cause")
-    lines = [header, "-" * len(header)]
+    cells = []
     for row in rows:
         safety = row["safety"]
         braking = safety.get("braking_since_s")
-        cause = safety["safe_stop"] or ""
-        lines.append(
-            f"{row['scenario']:<22} {row['robots']:>2} {row['duration_s']:>6.1f} "
-            f"{row['outcome']:<22} {row['min_h_m']:>9.3f} {row.get('relaxed_plans', 0):>7} "
-            f"{row.get('max_barrier_slack_m', 0.0):>13.4f} "
-            f"{'-' if braking is None else f'{braking:.2f}':>11}  {cause[:70]}")
-    lines.append("min h: ground truth, every body against every obstacle (< 0: inside the "
-                 "margin); relaxed: plans whose soft barriers used slack")
-    return "\n".join(lines)
+        cells.append([row["scenario"], str(row["robots"]), f"{row['duration_s']:.1f}",
+                      row["outcome"], f"{row['min_h_m']:.3f}", str(row.get("relaxed_plans", 0)),
+                      f"{row.get('max_barrier_slack_m', 0.0):.4f}",
+                      "-" if braking is None else f"{braking:.2f}",
+                      (safety["safe_stop"] or "")[:70]])
+    return render_table(
+        ["case", Column("n", "right"), Column("sim s", "right"), "outcome",
+         *(Column(name, "right") for name in ("min h [m]", "relaxed", "max slack [m]",
+                                              "braking [s]")), "stop cause"], cells,
+        ["min h: ground truth, every body against every obstacle (< 0: inside the margin); "
+         "relaxed: plans whose soft barriers used slack"])
+
 
 
 def write_json(rows: list[dict], path: Path) -> None:

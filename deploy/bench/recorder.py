@@ -27,6 +27,7 @@ from deploy.config.scenario import load_scenario
 from deploy.recording.flight_recorder import FlightRecorder, RecorderSettings
 from deploy.recording.log_format import LOG_FORMAT_VERSION, RUN_METADATA
 from deploy.recording.run_record import open_run_recorder
+from deploy.reports.table import Column, render_table
 from deploy.runtime.codegen_cache import CompiledCodeCache
 from deploy.runtime.sim_run import SimRun
 
@@ -120,27 +121,30 @@ def bench_memory(messages: list, minutes: float) -> dict:
 
 
 def format_tables(rows: list[dict], memory: dict | None) -> str:
-    header = (f"{'recorder':<9} {'runs':>4} {'wall/sim s':>10} {'tick med ms':>11} "
-              f"{'tick p95 ms':>11} {'msg/sim s':>9} {'msg/wall s':>10} {'MB/sim min':>10} "
-              f"{'dropped':>7}")
-    lines = [header, "-" * len(header)]
+    cells = []
     for row in rows:
-        extra = (f"{row['messages_per_sim_s']:>9.0f} {row['messages_per_wall_s']:>10.0f} "
-                 f"{row['mb_per_sim_min']:>10.1f} {row['dropped']:>7}" if row["recorder"] == "on"
-                 else f"{'':>9} {'':>10} {'':>10} {'':>7}")
-        lines.append(f"{row['recorder']:<9} {row['runs']:>4} {row['wall_per_sim_s']:>10.3f} "
-                     f"{row['tick_median_ms']:>11.3f} {row['tick_p95_ms']:>11.3f} {extra}")
+        on = row["recorder"] == "on"
+        cells.append([row["recorder"], str(row["runs"]), f"{row['wall_per_sim_s']:.3f}",
+                      f"{row['tick_median_ms']:.3f}", f"{row['tick_p95_ms']:.3f}",
+                      f"{row['messages_per_sim_s']:.0f}" if on else "",
+                      f"{row['messages_per_wall_s']:.0f}" if on else "",
+                      f"{row['mb_per_sim_min']:.1f}" if on else "",
+                      str(row["dropped"]) if on else ""])
     on = rows[1]
-    lines.append(f"ratio on/off: wall {on['wall_ratio']:.3f}, tick median "
-                 f"{on['tick_median_ratio']:.3f}, tick p95 {on['tick_p95_ratio']:.3f} "
-                 "(target: overhead <= 5 %, i.e. wall ratio <= 1.05)")
+    notes = [f"ratio on/off: wall {on['wall_ratio']:.3f}, tick median "
+             f"{on['tick_median_ratio']:.3f}, tick p95 {on['tick_p95_ratio']:.3f} "
+             "(target: overhead <= 5 %, i.e. wall ratio <= 1.05)"]
     if memory is not None:
         rss = memory["rss_mb"]
-        lines.append(
+        notes.append(
             f"memory: {memory['simulated_minutes']:.0f} simulated minutes, "
             f"{memory['messages']} messages in {memory['wall_s']:.0f} s, dropped "
             f"{memory['dropped']}; RSS start {rss[0]:.0f} MB, after 1 min "
             f"{rss[min(1, len(rss) - 1)]:.0f} MB, "
             f"end {rss[-1]:.0f} MB (growth after the first minute "
             f"{memory['growth_after_first_minute_mb']:+.1f} MB)")
-    return "\n".join(lines)
+    numbers = [Column(name, "right") for name in (
+        "runs", "wall/sim s", "tick med ms", "tick p95 ms", "msg/sim s", "msg/wall s",
+        "MB/sim min", "dropped")]
+    return render_table(["recorder", *numbers], cells, notes)
+

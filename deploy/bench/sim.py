@@ -13,6 +13,7 @@ from pathlib import Path
 
 from core.nmpc.settings import MpcSettings
 from deploy.config.scenario import load_scenario
+from deploy.reports.table import Column, render_table
 from deploy.runtime.codegen_cache import CompiledCodeCache
 from deploy.runtime.sim_run import SimRun
 
@@ -34,23 +35,24 @@ def bench_scenario(name: str, duration_s: float, executor: str, base: MpcSetting
 
 
 def format_table(rows: list[dict]) -> str:
-    header = (f"{'scenario':<22} {'n':>2} {'sim s':>6} {'RTF':>5} {'wbc med':>8} "
-              f"{'wbc p95':>8} {'nmpc med':>9} {'nmpc p95':>9} {'miss':>5} "
-              f"{'nmpc %':>7} {'wbc %':>6} {'rest %':>7}")
-    lines = [header, "-" * len(header)]
+    cells = []
     for row in rows:
         wall = row["wall_s"]
         nmpc = 100 * row["nmpc_wall_s"] / wall
         wbc = 100 * row["wbc_wall_s"] / wall
-        lines.append(
-            f"{row['scenario']:<22} {row['robots']:>2} {row['duration_s']:>6.1f} "
-            f"{row['real_time_factor']:>5.2f} {row['wbc_tick_ms']['median']:>8.3f} "
-            f"{row['wbc_tick_ms']['p95']:>8.3f} {row['nmpc_update_ms']['median']:>9.2f} "
-            f"{row['nmpc_update_ms']['p95']:>9.2f} "
-            f"{row['deadline_misses']:>5} {nmpc:>7.1f} {wbc:>6.1f} {100 - nmpc - wbc:>7.1f}")
-    lines.append("times in ms per robot WBC tick / per NMPC update; RTF = simulated / wall time; "
-                 "miss = NMPC updates over 16.7 ms; % = share of the loop's wall time")
-    return "\n".join(lines)
+        cells.append([row["scenario"], str(row["robots"]), f"{row['duration_s']:.1f}",
+                      f"{row['real_time_factor']:.2f}", f"{row['wbc_tick_ms']['median']:.3f}",
+                      f"{row['wbc_tick_ms']['p95']:.3f}",
+                      f"{row['nmpc_update_ms']['median']:.2f}",
+                      f"{row['nmpc_update_ms']['p95']:.2f}", str(row["deadline_misses"]),
+                      f"{nmpc:.1f}", f"{wbc:.1f}", f"{100 - nmpc - wbc:.1f}"])
+    numbers = [Column(name, "right") for name in (
+        "n", "sim s", "RTF", "wbc med", "wbc p95", "nmpc med", "nmpc p95", "miss", "nmpc %",
+        "wbc %", "rest %")]
+    return render_table(["scenario", *numbers], cells, [
+        "times in ms per robot WBC tick / per NMPC update; RTF = simulated / wall time; miss = "
+        "NMPC updates over 16.7 ms; % = share of the loop's wall time"])
+
 
 
 def write_json(rows: list[dict], path: Path) -> None:

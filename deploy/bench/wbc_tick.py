@@ -15,6 +15,7 @@ import time
 import numpy as np
 
 from deploy.config.scenario import load_scenario
+from deploy.reports.table import Column, render_table
 from deploy.runtime.codegen_cache import CompiledCodeCache
 from deploy.runtime.sim_run import SimRun
 
@@ -63,12 +64,11 @@ def run_bench(ticks: int, scenario_name: str = "two_go2",
 
 
 def format_table(rows: list[dict]) -> str:
-    header = f"{'pace':>16} {'ticks':>6} {'robots':>6} {'median ms':>10} {'p99 ms':>8} {'ratio':>6}"
-    lines = [header, "-" * len(header)]
-    for row in rows:
-        pace = "back to back" if not row["pace_ms"] else f"every {row['pace_ms']:g} ms"
-        lines.append(f"{pace:>16} {row['ticks']:>6} {row['robots']:>6} "
-                     f"{row['median_ms']:>10.3f} {row['p99_ms']:>8.3f} {row['ratio']:>6.2f}")
-    lines.append("work of one WBC tick (every robot's wbc_steps), wall ms; ratio = median / "
-                 "back-to-back median")
-    return "\n".join(lines)
+    cells = [["back to back" if not row["pace_ms"] else f"every {row['pace_ms']:g} ms",
+              str(row["ticks"]), str(row["robots"]), f"{row['median_ms']:.3f}",
+              f"{row['p99_ms']:.3f}", f"{row['ratio']:.2f}"] for row in rows]
+    return render_table([Column(name, "right") for name in (
+        "pace", "ticks", "robots", "median ms", "p99 ms", "ratio")], cells,
+        ["work of one WBC tick (every robot's wbc_steps), wall ms; ratio = median / "
+         "back-to-back median"])
+

@@ -9,6 +9,7 @@ from pathlib import Path
 
 from deploy.recording.log_format import RUN_METADATA
 from deploy.recording.log_reader import LogError, LogFile, recover
+from deploy.reports.table import Column, render_table
 
 SUMMARY_KEYS = ("scenario", "duration_s", "reached_goal", "falls", "final_goal_distance_m",
                 "min_h_m", "rms_payload_position_error_m", "max_coupling_error_m",
@@ -33,9 +34,9 @@ def describe(log: LogFile) -> str:
                      f"{recorder.get('messages_dropped')} dropped"
                      + (f", error {recorder['writer_error']}" if recorder.get("writer_error")
                         else ""))
-    lines.append(f"{'topic':32s} {'messages':>9s} {'rate [Hz]':>10s}")
-    lines.extend(f"{topic:32s} {row['messages']:9d} {row['rate_hz']:10.1f}"
-                 for topic, row in topics.items())
+    lines.append(render_table(
+        ["topic", Column("messages", "right"), Column("rate [Hz]", "right")],
+        [[topic, str(row["messages"]), f"{row['rate_hz']:.1f}"] for topic, row in topics.items()]))
     lines.append("attachments: " + ", ".join(record["attachments"]))
     summary = record["summary"]
     if summary is None:

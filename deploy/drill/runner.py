@@ -26,6 +26,7 @@ import yaml
 from deploy.config.deploy_config import CONFIG_DIR
 from deploy.drill.catalogue import AT_S, DrillFault
 from deploy.recording.log_reader import LogError, LogFile, recover
+from deploy.reports.table import Column, render_table
 
 __all__ = ["DURATION_S", "DrillRow", "format_table", "run_fault"]
 
@@ -209,18 +210,17 @@ def _judge(fault: DrillFault, code: int, summary: dict[str, Any] | None, stderr:
 
 
 def format_table(rows: list[DrillRow]) -> str:
-    header = (f"{'fault':<44} {'expected':<11} {'ok':<3} {'detected [ms]':>13} "
-              f"{'final':<6} {'non-damping':>11} {'log':<10} {'exit':>4}  detail")
-    lines = [header, "-" * len(header)]
-    for row in rows:
-        detected = "-" if row.detected_after_ms is None else f"{row.detected_after_ms:.0f}"
-        non_damping = "-" if row.non_damping_after_detection is None \
-            else str(row.non_damping_after_detection)
-        lines.append(f"{row.fault:<44} {row.expect:<11} {'yes' if row.passed else 'NO':<3} "
-                     f"{detected:>13} {row.final_state:<6} {non_damping:>11} "
-                     f"{row.log[:10]:<10} {row.exit_code:>4}  {row.detail}")
+    columns: list[Column | str] = [
+        "fault", "expected", "ok", Column("detected [ms]", "right"), "final",
+        Column("non-damping", "right"), "log", Column("exit", "right"), "detail"]
+    cells = [[row.fault, row.expect, "yes" if row.passed else "NO",
+              "-" if row.detected_after_ms is None else f"{row.detected_after_ms:.0f}",
+              row.final_state,
+              "-" if row.non_damping_after_detection is None
+              else str(row.non_damping_after_detection),
+              row.log[:10], str(row.exit_code), row.detail] for row in rows]
     passed = sum(row.passed for row in rows)
-    lines.append(f"{passed} of {len(rows)} faults handled as expected; detected: simulated ms "
-                 "from the fault to the first damping-only command a robot received; "
-                 "non-damping: commands that were not damping after that (must be 0)")
-    return "\n".join(lines)
+    return render_table(columns, cells, [
+        f"{passed} of {len(rows)} faults handled as expected; detected: simulated ms from the "
+        "fault to the first damping-only command a robot received; non-damping: commands that "
+        "were not damping after that (must be 0)"])

@@ -12,6 +12,7 @@ import numpy as np
 
 from core.nmpc.settings import MpcSettings
 from deploy.config.scenario import load_scenario
+from deploy.reports.table import Column, render_table
 from deploy.runtime.codegen_cache import CompiledCodeCache
 from deploy.runtime.sim_run import SimRun
 
@@ -87,14 +88,14 @@ def plot_experiments(rows: list[dict], path: Path) -> None:
 
 
 def format_experiments(rows: list[dict]) -> str:
-    header = (f"{'scenario':<22}{'goal':>6}{'falls':>6}{'min h m':>9}{'rms pos m':>10}   "
-              "the paper shows")
-    lines = ["porter paper experiments: the paper's experiments as MuJoCo scenarios", header,
-             "-" * len(header)]
-    lines += [f"{r['scenario']:<22}{'yes' if r['reached_goal'] else 'no':>6}{r['falls']:>6}"
-              f"{r['min_h_m']:>9.3f}{r['rms_payload_position_error_m']:>10.3f}   {r['paper']}"
-              for r in rows]
-    return "\n".join(lines)
+    cells = [[r["scenario"], "yes" if r["reached_goal"] else "no", str(r["falls"]),
+              f"{r['min_h_m']:.3f}", f"{r['rms_payload_position_error_m']:.3f}", r["paper"]]
+             for r in rows]
+    table = render_table(["scenario", "goal", Column("falls", "right"),
+                          Column("min h m", "right"), Column("rms pos m", "right"),
+                          "the paper shows"], cells)
+    return "porter paper experiments: the paper's experiments as MuJoCo scenarios\n" + table
+
 
 
 def reproduce_experiments(names: list[str], duration_s: float | None, out: Path) -> int:

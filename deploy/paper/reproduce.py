@@ -13,6 +13,7 @@ from core.nmpc.settings import MpcSettings
 from deploy.config.scenario import Scenario, load_scenario
 from deploy.paper.claims import CLAIMS, Claim, Variant
 from deploy.recording.expectations import flatten_summary
+from deploy.reports.table import Column, render_table
 from deploy.runtime.codegen_cache import CompiledCodeCache
 from deploy.runtime.sim_run import SimRun
 
@@ -58,18 +59,20 @@ def run_claim(claim: Claim, scenario_name: str, duration_s: float | None,
 
 def format_rows(claim: Claim, rows: list[dict]) -> str:
     short = {m: m.split(".")[-1] for m in claim.metrics}
-    header = f"{'variant':<38}" + "".join(
-        f"{short[m] + ' porter':>24}{'paper':>10}" for m in claim.metrics) + (
-        f"{'falls':>6}{'goal':>6}{'min h m':>9}")
-    lines = [f"porter paper {claim.name}: {claim.statement}", header, "-" * len(header)]
+    columns: list[Column | str] = ["variant"]
+    for m in claim.metrics:
+        columns += [Column(f"{short[m]} porter", "right"), Column("paper", "right")]
+    columns += [Column("falls", "right"), "goal", Column("min h m", "right")]
+    cells = []
     for row in rows:
-        cells = "".join(
-            f"{row['metrics'][m]:>24.3g}"
-            + (f"{row['paper'][m]:>10.3g}" if m in row["paper"] else f"{'-':>10}")
-            for m in claim.metrics)
-        lines.append(f"{row['variant']:<38}{cells}{row['falls']:>6}"
-                     f"{'yes' if row['reached_goal'] else 'no':>6}{row['min_h_m']:>9.3f}")
-    return "\n".join(lines)
+        values = []
+        for m in claim.metrics:
+            values += [f"{row['metrics'][m]:.3g}",
+                       f"{row['paper'][m]:.3g}" if m in row["paper"] else "-"]
+        cells.append([row["variant"], *values, str(row["falls"]),
+                      "yes" if row["reached_goal"] else "no", f"{row['min_h_m']:.3f}"])
+    return f"porter paper {claim.name}: {claim.statement}\n" + render_table(columns, cells)
+
 
 
 def plot(claim: Claim, rows: list[dict], path: Path) -> None:

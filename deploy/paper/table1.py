@@ -9,6 +9,7 @@ from pathlib import Path
 from typing import Any
 
 from deploy.bench.nmpc import BenchRow, run_bench
+from deploy.reports.table import Column, render_table
 
 # Table I of the paper: decision variables (dist., cent.), IPOPT iterations, distributed and
 # centralized NLP solve time [ms] (average, standard deviation).
@@ -52,24 +53,26 @@ def table1_rows(rows: list[BenchRow]) -> list[dict]:
 
 
 def format_table1(rows: list[dict]) -> str:
-    header = (f"{'n':>2} {'solver':<16}{'vars d/c':>11}{'iters d/c':>11}"
-              f"{'dist ms':>15}{'cent ms':>15}{'reduction':>10}   paper (IPOPT): dist / cent ms, "
-              "reduction")
-    lines = ["porter paper table1: distributed vs centralized NLP solve time (mean ± std)",
-             header, "-" * len(header)]
+    cells = []
     for r in rows:
         paper = r.get("paper")
-        beside = (f"   {paper['distributed'][0]:.2f} / {paper['centralized'][0]:.2f}, "
-                  f"{paper['reduction']:+.0%}" if paper else "")
-        lines.append(
-            f"{r['agents']:>2} {r['solver']:<16}{r['variables'][0]:>5}/{r['variables'][1]:<5}"
-            f"{r['iterations'][0]:>5.1f}/{r['iterations'][1]:<5.1f}"
-            f"{r['distributed_ms'][0]:>9.2f} ±{r['distributed_ms'][1]:>4.1f}"
-            f"{r['centralized_ms'][0]:>9.2f} ±{r['centralized_ms'][1]:>4.1f}"
-            f"{r['reduction']:>+10.0%}{beside}")
-    lines.append("reduction = 1 - distributed / centralized NLP time; distributed = one local "
-                 "NLP (solved in parallel, one process per agent)")
-    return "\n".join(lines)
+        cells.append([
+            str(r["agents"]), r["solver"], f"{r['variables'][0]}/{r['variables'][1]}",
+            f"{r['iterations'][0]:.1f}/{r['iterations'][1]:.1f}",
+            f"{r['distributed_ms'][0]:.2f} ±{r['distributed_ms'][1]:.1f}",
+            f"{r['centralized_ms'][0]:.2f} ±{r['centralized_ms'][1]:.1f}",
+            f"{r['reduction']:+.0%}",
+            f"{paper['distributed'][0]:.2f} / {paper['centralized'][0]:.2f}, "
+            f"{paper['reduction']:+.0%}" if paper else ""])
+    columns: list[Column | str] = [Column("n", "right"), "solver",
+               *(Column(name, "right") for name in ("vars d/c", "iters d/c", "dist ms",
+                                                    "cent ms", "reduction")),
+               "paper (IPOPT): dist / cent ms, reduction"]
+    return ("porter paper table1: distributed vs centralized NLP solve time (mean ± std)\n"
+            + render_table(columns, cells, [
+                "reduction = 1 - distributed / centralized NLP time; distributed = one local "
+                "NLP (solved in parallel, one process per agent)"]))
+
 
 
 def reproduce_table1(agent_counts: list[int], duration_s: float, out: Path) -> int:

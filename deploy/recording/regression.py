@@ -48,6 +48,7 @@ from deploy.recording.log_reader import LogError, LogFile
 from deploy.recording.messages import porter_log_pb2 as pb
 from deploy.recording.resimulation import logged_run
 from deploy.recording.resimulation import resimulate as resimulate_run
+from deploy.reports.table import Column, render_table
 from deploy.runtime.blas_kernels import GENERIC, cpu_target, host_cpu_flags
 from deploy.runtime.codegen_cache import CompiledCodeCache
 from drivers.robot_descriptions import srb_parameters
@@ -231,10 +232,12 @@ def format_report(report: LogRegression) -> str:
     verdict = "PASS" if report.passed else "FAIL"
     lines = [f"{verdict} {report.log}: {report.decisions} decisions replayed "
              f"({report.keyframes} keyframes), {report.status_mismatches} status mismatches"]
-    lines.append(f"  {'quantity':20s} {'max deviation':>14s} {'tolerance':>10s}")
-    for key, tolerance in TOLERANCES.items():
-        mark = "" if report.max_deviation[key] <= tolerance else "  <-- exceeds"
-        lines.append(f"  {key:20s} {report.max_deviation[key]:14.3g} {tolerance:10.1g}{mark}")
+    table = render_table(
+        ["quantity", Column("max deviation", "right"), Column("tolerance", "right"), ""],
+        [[key, f"{report.max_deviation[key]:.3g}", f"{tolerance:.1g}",
+          "" if report.max_deviation[key] <= tolerance else "<-- exceeds"]
+         for key, tolerance in TOLERANCES.items()])
+    lines.extend(f"  {line}" for line in table.splitlines())
     lines.append(f"  BLAS kernels: replayed on {report.kernels_replayed}, recorded on "
                  f"{report.kernels_recorded}")
     if report.first_failure:
