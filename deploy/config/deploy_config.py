@@ -196,6 +196,10 @@ class SimConfig(StrictModel):
     untracked_bodies: list[str] = []  # streamed with tracking invalid (Motive lost them)
     silent_robots: list[str] = []  # their fakes never publish a state
     faults: list[SimFault] = []  # injected while running (see SimFault)
+    # drills of kill -9: when porter's process is gone, the world runs on for ORPHAN_RUN_S
+    # simulated seconds (what reaches the motors now comes from the watchdog alone), then
+    # writes its ground truth as JSON to this file; None: the world ends with porter
+    orphan_report: str | None = None
 
 
 class DeployConfig(StrictModel):

@@ -5,7 +5,10 @@ first damping-only command on nothing but damping reaches any motor), ``sit down
 request: exit 130, the team sits down, no safe stop), ``ignored`` (the run completes, exit 0,
 and the link counted what it refused: ``rejected``), ``refused`` (a bad config or command
 line: exit 2 naming ``cause`` before anything starts), ``not started`` (the pre-flight check
-names ``cause`` and the robots never stand up: exit 1). Times are simulated seconds after the
+names ``cause`` and the robots never stand up: exit 1), ``damped`` (porter's own process is
+killed: nothing of porter reports, so the world, running on, says whether every robot got
+damping-only commands within ``DAMPED_WITHIN_S`` from the watchdog and nothing else after, and
+the log must read back up to its last flushed chunk). Times are simulated seconds after the
 world starts (the team is RUNNING from about 1.5 s with the drill's short stand-up).
 """
 
@@ -14,11 +17,12 @@ from __future__ import annotations
 from dataclasses import dataclass, field
 from typing import Any, Literal
 
-__all__ = ["AT_S", "DrillFault", "catalogue"]
+__all__ = ["AT_S", "DAMPED_WITHIN_S", "DrillFault", "catalogue"]
 
 AT_S = 2.5  # simulated s after the world starts: RUNNING by then
-Expect = Literal["safe stop", "sit down", "ignored", "refused", "not started"]
-Action = Literal["none", "sigterm", "sigint", "kill_nmpc"]
+DAMPED_WITHIN_S = 0.05  # kill -9 of porter: every robot damped this soon (simulated s)
+Expect = Literal["safe stop", "sit down", "ignored", "refused", "not started", "damped"]
+Action = Literal["none", "sigterm", "sigint", "kill_nmpc", "kill_porter"]
 
 
 @dataclass(frozen=True)
@@ -78,6 +82,8 @@ def catalogue() -> list[DrillFault]:
         DrillFault("NMPC solver failure streak", stop, "NMPC solver failed",
                    _sim("nmpc_failure")),
         DrillFault("NMPC process killed", stop, "NMPC process lost", action="kill_nmpc"),
+        DrillFault("kill -9 of porter (the loop's own process)", "damped", "",
+                   action="kill_porter"),
         DrillFault("flight recorder: disk full", stop, "flight recorder failed",
                    _sim("recorder_failure")),
         DrillFault("control loop stalls 0.3 s (watchdog)", stop, "watchdog took over",

@@ -24,13 +24,14 @@ from typing import Any
 import yaml
 
 from deploy.config.deploy_config import CONFIG_DIR
-from deploy.drill.catalogue import AT_S, DrillFault
+from deploy.drill.catalogue import AT_S, DAMPED_WITHIN_S, DrillFault
 from deploy.recording.log_reader import LogError, LogFile, recover
 from deploy.reports.table import Column, render_table
 
 __all__ = ["DURATION_S", "DrillRow", "format_table", "run_fault"]
 
 DURATION_S = 2.0  # RUNNING seconds
+ORPHAN_REPORT = "world_after_porter.json"  # kill -9: the world's ground truth after porter
 STAND_UP = {"posture": {"stand_up_s": 1.0, "settle_s": 0.2}}
 _RUNNING = re.compile(r"-> RUNNING")
 
@@ -59,6 +60,8 @@ def _merge(base: dict[str, Any], changes: dict[str, Any]) -> dict[str, Any]:
 def _config(fault: DrillFault, folder: Path) -> Path:
     data = yaml.safe_load((CONFIG_DIR / "two_go2.yaml").read_text())
     data = _merge(_merge(data, STAND_UP), fault.config)
+    if fault.action == "kill_porter":  # the world outlives porter and reports what it saw
+        data = _merge(data, {"sim": {"orphan_report": str(folder / ORPHAN_REPORT)}})
     path = folder / "deploy.yaml"
     path.write_text(yaml.safe_dump(data))
     return path
@@ -100,6 +103,8 @@ def _act(process: subprocess.Popen, fault: DrillFault, running: threading.Event,
     elif fault.action == "kill_nmpc":
         for pid in _children_named(process.pid, "porter-nmpc"):
             os.kill(pid, signal.SIGKILL)
+    elif fault.action == "kill_porter":
+        process.kill()  # SIGKILL: no handler, no finally, no flush
 
 
 def run_fault(fault: DrillFault, folder: Path, timeout_s: float = 300.0) -> DrillRow:
@@ -144,8 +149,46 @@ def run_fault(fault: DrillFault, folder: Path, timeout_s: float = 300.0) -> Dril
     running.set()  # release an actor still waiting
     stdout = "".join(output)
     (folder / "stderr.txt").write_text("".join(errors))
+    if fault.action == "kill_porter":
+        return _judge_kill(fault, process.returncode, _orphan_report(folder / ORPHAN_REPORT),
+                           log_path, folder)
     summary = _summary(stdout)
     return _judge(fault, process.returncode, summary, "".join(errors), log_path, folder)
+
+
+def _orphan_report(path: Path, timeout_s: float = 60.0) -> dict[str, Any] | None:
+    """The world's report once it has run on without porter (it writes it at the end)."""
+    deadline = time.monotonic() + timeout_s
+    while time.monotonic() < deadline:
+        if path.exists():
+            try:
+                return json.loads(path.read_text())
+            except json.JSONDecodeError:
+                pass  # still being written
+        time.sleep(0.2)
+    return None
+
+
+def _judge_kill(fault: DrillFault, code: int, truth: dict[str, Any] | None, log_path: Path,
+                folder: Path) -> DrillRow:
+    """kill -9 of porter: from the moment the world lost porter, every robot must get
+    damping-only commands within ``DAMPED_WITHIN_S`` (the watchdog) and nothing else."""
+    log = _log_state(log_path, folder)
+    if truth is None or not truth.get("faults_applied"):
+        return DrillRow(fault.name, fault.expect, False, None, "killed", None, log, code,
+                        "the world wrote no report after porter was gone")
+    after = [robot.get("after_fault", {}) for robot in truth.get("robots", {}).values()]
+    firsts = [a.get("first_damping_s") for a in after]
+    non_damping = sum(a.get("non_damping_after_damping", 0) for a in after)
+    damped = bool(after) and all(first is not None for first in firsts)
+    detected_ms = 1e3 * max(firsts) if damped else None  # the last robot to be damped
+    passed = (code == -signal.SIGKILL and damped and non_damping == 0
+              and detected_ms is not None and detected_ms <= 1e3 * DAMPED_WITHIN_S
+              and (log == "yes" or log.startswith("recovered")))
+    detail = (f"every robot damped by the watchdog within {detected_ms:.0f} ms of the loss"
+              if damped else "a robot got no damping command")
+    return DrillRow(fault.name, fault.expect, passed, detected_ms, "killed", non_damping, log,
+                    code, detail)
 
 
 def _summary(stdout: str) -> dict[str, Any] | None:

@@ -31,6 +31,7 @@ from __future__ import annotations
 
 import contextlib
 import dataclasses
+import json
 import math
 import signal
 import threading
@@ -57,6 +58,7 @@ from drivers.unitree.a1_fake import FakeA1
 from drivers.unitree.go2_fake import FakeGo2
 
 MAX_CATCH_UP_STEPS = 20
+ORPHAN_RUN_S = 0.5  # simulated seconds the world runs on without porter (drills)
 SETTLE_SIT_S = 1.0  # PD to the sitting posture
 SETTLE_DAMPED_S = 2.0  # then joint damping: onto the belly
 SETTLE_KP, SETTLE_KD, SETTLE_DAMPING_KD = 60.0, 3.0, 2.0
@@ -281,7 +283,8 @@ class SimWorld:
             self.max_tilt_rad[name] = max(self.max_tilt_rad[name], tilt_rad(quaternion))
 
     def run(self, control: Connection) -> None:
-        """Real-time loop until ``"stop"`` arrives or the parent's end of ``control`` closes."""
+        """Real-time loop until ``"stop"`` arrives or the parent's end of ``control`` closes
+        (then, with ``sim.orphan_report``, ``ORPHAN_RUN_S`` more and the report)."""
         sim, settings = self.simulation, self.config.sim
         dt = sim.timestep_s
         scale = settings.time_scale
@@ -289,12 +292,26 @@ class SimWorld:
         mocap_period_s, ft_period_s = 1.0 / settings.mocap_rate_hz, 1.0 / settings.force_torque_rate_hz
         start = time.monotonic()
         start_sim_s = next_mocap_s = next_ft_s = sim.time_s
+        orphan_since_s: float | None = None
         while True:
-            if control.poll():
-                request = control.recv()
-                if request == "stop":
-                    return
-                control.send(self.ground_truth())
+            if orphan_since_s is None:
+                try:
+                    if control.poll():
+                        request = control.recv()
+                        if request == "stop":
+                            return
+                        control.send(self.ground_truth())
+                except (EOFError, OSError):  # porter's process is gone (kill -9, a crash)
+                    if settings.orphan_report is None:
+                        return
+                    orphan_since_s = sim.time_s
+                    self.faults_applied.append({"kind": "porter_lost", "robot": None,
+                                                "time_s": orphan_since_s})
+            elif sim.time_s - orphan_since_s >= ORPHAN_RUN_S:
+                assert settings.orphan_report is not None
+                with open(settings.orphan_report, "w") as report:
+                    json.dump(self.ground_truth(), report)
+                return
             self._inject_due_faults(sim.time_s - start_sim_s)
             for name, fake in self.fakes.items():
                 if fake.poll_commands():

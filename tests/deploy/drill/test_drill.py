@@ -9,7 +9,9 @@ import pytest
 
 from deploy.config.deploy_config import SimFault
 from deploy.drill.catalogue import DrillFault, catalogue
-from deploy.drill.runner import _judge, _merge, format_table, run_fault
+from deploy.drill.runner import _judge, _judge_kill, _merge, format_table, run_fault
+from deploy.recording.flight_recorder import FlightRecorder
+from deploy.recording.log_format import LOG_FORMAT_VERSION, RUN_METADATA
 
 
 def test_the_catalogue_has_every_family_and_at_least_thirty_faults() -> None:
@@ -17,7 +19,7 @@ def test_the_catalogue_has_every_family_and_at_least_thirty_faults() -> None:
     assert len(faults) >= 30
     assert len({f.name for f in faults}) == len(faults)
     assert {f.expect for f in faults} == {"safe stop", "sit down", "ignored", "refused",
-                                          "not started"}
+                                          "not started", "damped"}
     for fault in faults:
         for injected in fault.config.get("sim", {}).get("faults", []):
             SimFault.model_validate(injected)  # every injected fault is a valid one
@@ -57,6 +59,32 @@ def test_a_safe_stop_passes_only_with_its_cause_and_damping_only_after_detection
     assert "1 of 1 faults handled as expected" in table and "e-stop" in table
 
 
+def test_a_killed_porter_passes_only_if_every_robot_was_damped_in_time(tmp_path: Path) -> None:
+    """kill -9 of porter: the verdict comes from the world's report alone."""
+    fault = DrillFault("kill", "damped", "", action="kill_porter")
+    log = tmp_path / "absent.mcap"
+
+    def report(*firsts: float | None, non_damping: int = 0) -> dict:
+        return {"faults_applied": [{"kind": "porter_lost", "time_s": 5.0}],
+                "robots": {f"go2_{i}": {"after_fault": {
+                    "first_damping_s": first, "non_damping_after_damping": non_damping}}
+                    for i, first in enumerate(firsts)}}
+
+    row = _judge_kill(fault, -9, report(0.004, 0.006), log, tmp_path)
+    assert row.detected_after_ms == pytest.approx(6.0) and row.log == "none"
+    assert not row.passed  # no log to read back
+    written = tmp_path / "run.mcap"
+    FlightRecorder(written, metadata={RUN_METADATA: {"log_format_version": str(
+        LOG_FORMAT_VERSION)}}).close(summary={})
+    good = _judge_kill(fault, -9, report(0.004, 0.006), written, tmp_path)
+    assert good.passed and good.log == "yes"
+    assert not _judge_kill(fault, 0, report(0.004, 0.006), written, tmp_path).passed
+    assert not _judge_kill(fault, -9, report(0.004, None), log, tmp_path).passed
+    assert not _judge_kill(fault, -9, report(0.004, 0.080), log, tmp_path).passed
+    assert not _judge_kill(fault, -9, report(0.004, 0.006, non_damping=1), log, tmp_path).passed
+    assert not _judge_kill(fault, -9, None, log, tmp_path).passed
+
+
 def test_a_refused_config_must_exit_2_and_name_the_field(tmp_path: Path) -> None:
     fault = DrillFault("bad", "refused", "safety.damping_kd")
     err = "porter: deploy.yaml: safety.damping_kd: Input should be greater than 0\n"
@@ -69,7 +97,8 @@ def test_a_refused_config_must_exit_2_and_name_the_field(tmp_path: Path) -> None
 @pytest.mark.slow
 @pytest.mark.parametrize("name", ["e-stop pressed", "NatNet malformed packets",
                                   "config: damping_kd 0", "NMPC solver failure streak",
-                                  "NMPC process killed"])
+                                  "NMPC process killed",
+                                  "kill -9 of porter (the loop's own process)"])
 def test_drill_faults_end_to_end(tmp_path: Path, name: str) -> None:
     (fault,) = [f for f in catalogue() if f.name == name]
     row = run_fault(fault, tmp_path / "run")
@@ -77,3 +106,7 @@ def test_drill_faults_end_to_end(tmp_path: Path, name: str) -> None:
     if fault.expect == "safe stop" and fault.action == "none":  # the world timed the fault
         assert row.non_damping_after_detection == 0 and row.log == "yes"
         assert row.detected_after_ms is not None and row.detected_after_ms < 300
+    if fault.expect == "damped":  # kill -9: the watchdog alone, the log recovered
+        assert row.exit_code == -9 and row.non_damping_after_detection == 0
+        assert row.detected_after_ms is not None and row.detected_after_ms <= 50
+        assert row.log.startswith("recovered") or row.log == "yes"
