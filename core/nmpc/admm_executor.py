@@ -1,16 +1,22 @@
 """Where ADMM local solves run. The algorithm hands over plain arrays and gets solutions back,
 so the same code runs serially, in worker processes
 (``deploy.nmpc_runtime.process_executor``) or in agent processes over a network
-(``deploy.agents.zenoh_executor``)."""
+(``deploy.agents.zenoh_executor``).
+
+The consensus and dual step (``consensus_step``) is here too, so that the coordinator
+(``core.nmpc.admm_mpc``) and agents that run the ADMM among themselves without one
+(``run_agent_admm``: every agent receives every s^j and computes s-bar and all duals) do
+the same arithmetic: from the same inputs they reach the same s-bar, bit for bit."""
 
 from __future__ import annotations
 
-from dataclasses import dataclass
+from collections.abc import Callable
+from dataclasses import dataclass, field, replace
 from typing import Protocol
 
 import numpy as np
 
-from core.nmpc.nlp_solver import NlpCompiler, NlpSolution, NlpSolver
+from core.nmpc.nlp_solver import NlpCompiler, NlpSolution, NlpSolver, SolveStats
 from core.nmpc.settings import MpcSettings
 from core.nmpc.transport_problem import build_transport_problem
 
@@ -70,3 +76,78 @@ class SerialExecutor:
 
     def close(self) -> None:
         pass
+
+
+def consensus_step(received: np.ndarray, duals: np.ndarray, consensus: np.ndarray,
+                   fresh: np.ndarray | None = None) -> tuple[np.ndarray, np.ndarray]:
+    """(s-bar, duals) after one ADMM iteration: s-bar = mean over the fresh agents of
+    (s^j + w^j), then w^j += s^j - s-bar for them; ``received`` and ``duals`` have one row
+    per agent; with no fresh agent both stay as they were."""
+    fresh = np.ones(received.shape[0], dtype=bool) if fresh is None else fresh
+    if not fresh.any():
+        return consensus, duals
+    new_consensus = np.mean((received + duals)[fresh], axis=0)
+    new_duals = duals.copy()
+    new_duals[fresh] = duals[fresh] + received[fresh] - new_consensus
+    return new_consensus, new_duals
+
+
+def fallback_solution(result: NlpSolution, guess: np.ndarray) -> NlpSolution:
+    """A non-finite local result is replaced by its warm start (its stats still say it failed)."""
+    if np.all(np.isfinite(result.decision)):
+        return result
+    return NlpSolution(guess, np.zeros_like(result.constraint_multipliers),
+                       np.zeros_like(result.bound_multipliers), result.stats)
+
+
+@dataclass
+class AgentAdmm:
+    """One agent's run of an update's ADMM iterations without a coordinator: its final local
+    solution, and per iteration its solve's stats, its s^i and the s-bar after it; the duals
+    of every agent at the end. ``failure`` says why it stopped early (a silent peer)."""
+
+    solution: NlpSolution
+    stats: list[SolveStats] = field(default_factory=list)
+    shared: list[np.ndarray] = field(default_factory=list)
+    consensus: list[np.ndarray] = field(default_factory=list)
+    duals: np.ndarray | None = None
+    failure: str = ""
+
+
+# (iteration, this agent's s^i) -> every agent's s^j (one row each), or None if one is silent
+Exchange = Callable[[int, np.ndarray], "np.ndarray | None"]
+
+
+def run_agent_admm(solver: NlpSolver, request: LocalSolveRequest, consensus: np.ndarray,
+                   duals: np.ndarray, iterations: int, target: slice,
+                   shared_indices: np.ndarray, exchange: Exchange) -> AgentAdmm:
+    """Agent ``request.agent``'s side of ``iterations`` ADMM iterations: solve with the
+    consensus target s-bar - w^i (in ``target`` of the parameters), hand s^i to ``exchange``,
+    and from every agent's s^j compute s-bar and every dual (``consensus_step``), as the
+    coordinator would. Warm starts as in ``DistributedMpc.update``."""
+    run = AgentAdmm(solution=NlpSolution(request.initial_guess, np.zeros(0), np.zeros(0),
+                                         SolveStats("not run", False, 0, 0.0,
+                                                    float("nan"), float("nan"))))
+    current = request
+    for iteration in range(iterations):
+        parameters = request.parameters.copy()
+        parameters[target] = consensus - duals[request.agent]
+        current = replace(current, parameters=parameters, iteration=iteration)
+        solution = fallback_solution(solve_request(solver, current), current.initial_guess)
+        shared = solution.decision[shared_indices]
+        run.solution = solution
+        run.stats.append(solution.stats)
+        run.shared.append(shared)
+        received = exchange(iteration, shared)
+        if received is None:
+            run.failure = f"a peer was silent at ADMM iteration {iteration}"
+            run.solution = replace(solution, stats=replace(
+                solution.stats, status=run.failure, success=False))
+            return run
+        consensus, duals = consensus_step(received, duals, consensus)
+        run.consensus.append(consensus)
+        current = replace(current, initial_guess=solution.decision,
+                          constraint_multipliers=solution.constraint_multipliers,
+                          bound_multipliers=solution.bound_multipliers, warm_start=True)
+    run.duals = duals
+    return run

@@ -15,6 +15,7 @@ and dual ||P (s_bar_{r+1} - s_bar_r)||. The wrench-only ablation is the same alg
 from __future__ import annotations
 
 import time
+from dataclasses import replace
 
 import numpy as np
 
@@ -22,14 +23,17 @@ from core.communication.lossy_channel import LossyChannel
 from core.model.srb_model import STATE_SIZE, WRENCH_SIZE
 from core.model.team import TeamModel
 from core.nmpc.admm_executor import (
+    AgentAdmm,
     LocalSolveExecutor,
     LocalSolveRequest,
     LocalSolverSpec,
     SerialExecutor,
+    consensus_step,
+    fallback_solution,
 )
 from core.nmpc.mpc_inputs import MpcInputs
 from core.nmpc.mpc_plan import AdmmIteration, MpcPlan, decode_plan
-from core.nmpc.nlp_solver import NlpCompiler, NlpSolution
+from core.nmpc.nlp_solver import NlpCompiler, NlpSolution, SolveStats
 from core.nmpc.settings import MpcSettings
 from core.nmpc.transport_problem import build_transport_problem
 from core.nmpc.warm_start import ControllerMemory, initial_guess, shifted_multipliers
@@ -54,6 +58,12 @@ class DistributedMpc:
         self.channel = (None if channel.perfect
                         else LossyChannel(channel, team.agent_count, self._shift_shared))
         self._payload_size = settings.horizon_steps * STATE_SIZE
+        # agents that run the ADMM among themselves (coordinator-free): this process only
+        # hands them the update's data and keeps the consensus and duals between updates
+        self.peer_topology = bool(getattr(executor, "runs_admm", False))
+        if self.peer_topology and self.channel is not None:
+            raise ValueError("admm.channel (the emulated lossy channel) applies at the "
+                             "coordinator; the coordinator-free topology has none")
         self.executor = executor or SerialExecutor(
             LocalSolverSpec(settings, team.agent_count, compiler)
         )
@@ -114,7 +124,20 @@ class DistributedMpc:
         solutions: list[NlpSolution] = []
         records: list[AdmmIteration] = []
         self._updates += 1
-        for iteration in range(iterations):
+        if self.peer_topology:
+            requests = []
+            for i, warm in enumerate(multipliers):
+                requests.append(LocalSolveRequest(
+                    agent=i, initial_guess=guesses[i], parameters=parameters[i],
+                    lower_bounds=bounds[i][0], upper_bounds=bounds[i][1],
+                    constraint_multipliers=None if warm is None else warm[0],
+                    bound_multipliers=None if warm is None else warm[1],
+                    warm_start=warm is not None, update=self._updates))
+            runs = self.executor.run_admm(  # type: ignore[attr-defined]
+                requests, consensus, duals, iterations)
+            solutions, records, consensus, duals, warnings = self._from_agents(
+                runs, consensus, duals, iterations)
+        for iteration in range(0 if self.peer_topology else iterations):
             requests = []
             for i in range(na):
                 warm = ((solutions[i].constraint_multipliers, solutions[i].bound_multipliers)
@@ -134,25 +157,22 @@ class DistributedMpc:
                     iteration=iteration,
                 ))
             results = self.executor.solve_all(requests)
-            solutions = [result if np.all(np.isfinite(result.decision))
-                         else _fallback(result, request.initial_guess)
+            solutions = [fallback_solution(result, request.initial_guess)
                          for result, request in zip(results, requests, strict=True)]
             shared = np.array([self.problem.shared_trajectory(s.decision) for s in solutions])
             # Through the network (ChannelSettings): the coordinator's consensus and duals see
             # what arrived (held last); the residuals recorded are the agents' true gaps.
             received, fresh = ((shared, np.ones(na, dtype=bool)) if self.channel is None
                                else self.channel.exchange(shared, self._updates))
-            if fresh.any():
-                new_consensus = np.mean((received + duals)[fresh], axis=0)
-                duals[fresh] = duals[fresh] + received[fresh] - new_consensus
-            else:
-                new_consensus = consensus
-            records.append(self._residuals(shared - new_consensus,
-                                           new_consensus - consensus, results))
+            new_consensus, duals = consensus_step(received, duals, consensus, fresh)
+            records.append(self._residuals(shared - new_consensus, new_consensus - consensus,
+                                           [result.stats for result in results]))
             consensus = new_consensus
         self._previous = list(solutions)
         self._consensus, self._duals = consensus, duals
         plan = self._plan(inputs, solutions, consensus)
+        if self.peer_topology:
+            plan.warnings.extend(warnings)
         plan.admm_iterations = records
         plan.solves = [stats for record in records for stats in record.solves]
         plan.success = all(stats.success for stats in plan.solves)
@@ -184,8 +204,36 @@ class DistributedMpc:
         plan.consensus_trajectory = consensus
         return plan
 
+    def _from_agents(self, runs: list[AgentAdmm], consensus: np.ndarray, duals: np.ndarray,
+                     iterations: int) -> tuple[list[NlpSolution], list[AdmmIteration],
+                                               np.ndarray, np.ndarray, list[str]]:
+        """Solutions, iteration records, s-bar and duals from agents that ran the ADMM
+        without a coordinator. They must agree on s-bar (same inputs, same arithmetic): a
+        disagreement is a warning. One agent that stopped early fails the whole update."""
+        solutions = [run.solution for run in runs]
+        if any(run.failure or len(run.consensus) != iterations for run in runs):
+            shared = np.array([self.problem.shared_trajectory(s.decision) for s in solutions])
+            stats = [replace(s.stats, success=False) if not run.failure
+                     and len(run.consensus) != iterations else s.stats
+                     for s, run in zip(solutions, runs, strict=True)]
+            solutions = [replace(s, stats=st) for s, st in zip(solutions, stats, strict=True)]
+            record = self._residuals(shared - consensus, np.zeros_like(consensus), stats)
+            return solutions, [record], consensus, duals, []
+        records, previous = [], consensus
+        for r in range(iterations):
+            shared = np.array([run.shared[r] for run in runs])
+            records.append(self._residuals(shared - runs[0].consensus[r],
+                                           runs[0].consensus[r] - previous,
+                                           [run.stats[r] for run in runs]))
+            previous = runs[0].consensus[r]
+        gap = max(float(np.max(np.abs(run.consensus[-1] - previous))) for run in runs)
+        warnings = ([f"ADMM agents disagree on the consensus by {gap:.3g}"] if gap > 0.0
+                    else [])
+        assert runs[0].duals is not None
+        return solutions, records, previous, runs[0].duals, warnings
+
     def _residuals(self, primal: np.ndarray, consensus_change: np.ndarray,
-                   results: list[NlpSolution]) -> AdmmIteration:
+                   stats: list[SolveStats]) -> AdmmIteration:
         """Residuals of one iteration from r^i = s^i - s_bar (n_A rows) and s_bar_r - s_bar_{r-1}."""
         n, na = self.settings.horizon_steps, self.team.agent_count
         payload = primal[:, : self._payload_size].reshape(na, n, STATE_SIZE)
@@ -194,7 +242,7 @@ class DistributedMpc:
             primal_payload_rms=_rms(primal[:, : self._payload_size]),
             primal_wrench_rms=_rms(primal[:, self._payload_size :]),
             dual_norm=float(np.linalg.norm(self.weights * consensus_change)),
-            solves=tuple(result.stats for result in results),
+            solves=tuple(stats),
             primal_position_rms_m=_rms(payload[:, :, 0:3].reshape(na, -1)),
             primal_force_rms_n=_rms(wrench[:, :, 0:3].reshape(na, -1)),
         )
@@ -211,9 +259,3 @@ class DistributedMpc:
 
 def _rms(values: np.ndarray) -> np.ndarray:
     return np.sqrt(np.mean(np.square(values), axis=1))
-
-
-def _fallback(result: NlpSolution, guess: np.ndarray) -> NlpSolution:
-    """A non-finite local result is replaced by its warm start (its stats still say it failed)."""
-    return NlpSolution(guess, np.zeros_like(result.constraint_multipliers),
-                       np.zeros_like(result.bound_multipliers), result.stats)

@@ -38,6 +38,7 @@ from core.model.srb_model import (
 )
 from core.model.team import TeamModel
 from core.nmpc.cbf import OBSTACLE_PARAMETER_SIZE, stagewise_first_order, stagewise_hocbf
+from core.nmpc.layout import BlockLayout
 from core.nmpc.mpc_inputs import MpcInputs
 from core.nmpc.obstacle_selection import ObstacleSelection, select_obstacles
 from core.nmpc.settings import MpcSettings
@@ -86,12 +87,8 @@ class TransportProblem:
 
     def shared_trajectory(self, solution: np.ndarray) -> np.ndarray:
         """s = (payload states k = 1..N, then wrench j = 1..n_A over k = 0..N-1) from a solution."""
-        d = self.nlp.decision
-        n = self.horizon_steps
-        payload = [d.get(solution, f"payload@{k}") for k in range(1, n + 1)]
-        wrenches = [d.get(solution, f"wrench_{j}@{k}") for j in range(self.agent_count)
-                    for k in range(n)]
-        return np.concatenate(payload + wrenches)
+        return np.asarray(solution)[shared_indices(self.nlp.decision, self.horizon_steps,
+                                                   self.agent_count)]
 
     def consensus_weights(self) -> np.ndarray:
         return consensus_weights(self.settings, self.agent_count)
@@ -364,3 +361,14 @@ def consensus_weights(settings: MpcSettings, agent_count: int) -> np.ndarray:
         np.full(n * STATE_SIZE, admm.rho_state),
         np.full(n * WRENCH_SIZE * agent_count, admm.rho_wrench),
     ])
+
+
+def shared_indices(decision: BlockLayout, horizon_steps: int, agent_count: int
+                   ) -> np.ndarray:
+    """Where the shared trajectory s (``TransportProblem.shared_trajectory``) sits in a local
+    or centralized decision vector laid out by ``decision``: ``solution[indices]`` is s."""
+    n = horizon_steps
+    names = [f"payload@{k}" for k in range(1, n + 1)]
+    names += [f"wrench_{j}@{k}" for j in range(agent_count) for k in range(n)]
+    whole = np.arange(decision.size)
+    return np.concatenate([decision.get(whole, name) for name in names])

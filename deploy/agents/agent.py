@@ -2,6 +2,10 @@
 
 The agent builds its local NLP once, announces itself (``Hello``: team, agent, problem digest,
 host, pid) every heartbeat, and answers each ``SolveRequest`` on its key with a ``SolveReply``.
+Coordinator-free topology (a request with ``admm_iterations``): the agent runs the update's
+ADMM iterations with its peers itself (``core.nmpc.admm_executor.run_agent_admm``), sending
+its s^i to every agent (``SharedTrajectory``) and computing s-bar and every dual from theirs;
+a peer silent for ``peer_timeout_s`` ends its run as a failed solve, said in the reply.
 Malformed, foreign and other-problem requests are dropped and counted, never solved. When
 requests queue up (a slow solve), only the newest is solved: the coordinator waits for that
 round only. It exits on the coordinator's stop message, when its parent process (the one that
@@ -18,7 +22,10 @@ import threading
 from collections import Counter
 from dataclasses import dataclass
 
-from core.nmpc.admm_executor import LocalSolverSpec, solve_request
+import numpy as np
+
+from core.nmpc.admm_executor import LocalSolverSpec, run_agent_admm, solve_request
+from core.nmpc.transport_problem import shared_indices
 from deploy.agents import wire
 from deploy.agents.zenoh_session import (
     concrete_endpoint,
@@ -26,6 +33,7 @@ from deploy.agents.zenoh_session import (
     open_session,
     reply_key,
     request_key,
+    shared_key,
 )
 
 HEARTBEAT_S = 0.5
@@ -46,7 +54,7 @@ class AdmmAgent:
     """One agent's local solver behind Zenoh; ``serve`` runs until told to stop."""
 
     def __init__(self, spec: LocalSolverSpec, address: AgentAddress,
-                 parent_pid: int | None = None) -> None:
+                 parent_pid: int | None = None, peer_timeout_s: float = 1.0) -> None:
         if not 0 <= address.agent < spec.agent_count:
             raise ValueError(f"agent {address.agent} is not in a team of {spec.agent_count}")
         self.spec = spec
@@ -60,6 +68,15 @@ class AdmmAgent:
         self.superseded = 0  # requests replaced by a newer one before they were solved
         self._inbox: queue.Queue[bytes] = queue.Queue()
         self._stop = threading.Event()
+        self.peer_timeout_s = peer_timeout_s
+        problem = self.solver.problem
+        self._target = problem.parameters.slice("consensus_target")
+        self._shared_indices = shared_indices(problem.decision, spec.settings.horizon_steps,
+                                              spec.agent_count)
+        # peers' shared trajectories: (sequence, iteration) -> agent -> s^j
+        self._shared: dict[tuple[int, int], dict[int, np.ndarray]] = {}
+        self._shared_arrived = threading.Condition()
+        self._shared_out: object = None
 
     def serve(self) -> None:
         a = self.address
@@ -67,6 +84,8 @@ class AdmmAgent:
         try:
             session.declare_subscriber(request_key(a.key_prefix, a.agent),
                                        lambda sample: self._inbox.put(sample.payload.to_bytes()))
+            session.declare_subscriber(shared_key(a.key_prefix, "*"), self._on_shared)
+            self._shared_out = session.declare_publisher(shared_key(a.key_prefix, a.agent))
             replies = session.declare_publisher(reply_key(a.key_prefix, a.agent))
             hellos = session.declare_publisher(hello_key(a.key_prefix, a.agent))
             heartbeat = threading.Thread(target=self._heartbeat, args=(hellos,), daemon=True,
@@ -105,13 +124,55 @@ class AdmmAgent:
         if request is None:
             self._stop.set()
             return
-        if request.agent != a.agent:
+        local = request.request if isinstance(request, wire.PeerRequest) else request
+        if local.agent != a.agent:
             self.rejected["request for another agent"] += 1
             return
-        solution = solve_request(self.solver, request)
-        replies.put(wire.encode_reply(solution, a.team, a.agent,  # type: ignore[attr-defined]
-                                      sequence, request))
+        if isinstance(request, wire.PeerRequest):
+            run = run_agent_admm(self.solver, local, request.consensus, request.duals,
+                                 request.iterations, self._target, self._shared_indices,
+                                 lambda iteration, shared: self._exchange(
+                                     sequence, local.update, iteration, shared))
+            reply = wire.encode_reply(run.solution, a.team, a.agent, sequence, local, run)
+            with self._shared_arrived:  # this round is over: forget it and older ones
+                self._shared = {key: value for key, value in self._shared.items()
+                                if key[0] > sequence}
+        else:
+            reply = wire.encode_reply(solve_request(self.solver, local), a.team, a.agent,
+                                      sequence, local)
+        replies.put(reply)  # type: ignore[attr-defined]
         self.solved += 1
+
+    # --- coordinator-free topology ------------------------------------------------------------
+    def _on_shared(self, sample: object) -> None:
+        try:
+            agent, sequence, iteration, shared = wire.decode_shared(
+                sample.payload.to_bytes(), self.address.team,  # type: ignore[attr-defined]
+                self.spec.agent_count, self.sizes)
+        except wire.WireError as error:
+            self.rejected[error.reason.split(":")[0]] += 1
+            return
+        with self._shared_arrived:
+            self._shared.setdefault((sequence, iteration), {})[agent] = shared
+            self._shared_arrived.notify_all()
+
+    def _exchange(self, sequence: int, update: int, iteration: int, shared: np.ndarray
+                  ) -> np.ndarray | None:
+        """Send s^i to every agent; every agent's s^j of this iteration (agent order), or None
+        when one stays silent for ``peer_timeout_s``."""
+        agent = self.address.agent
+        with self._shared_arrived:  # our own, without waiting for Zenoh to echo it
+            self._shared.setdefault((sequence, iteration), {})[agent] = shared
+        self._shared_out.put(wire.encode_shared(  # type: ignore[attr-defined]
+            self.address.team, agent, sequence, update, iteration, shared))
+        with self._shared_arrived:
+            arrived = self._shared_arrived.wait_for(
+                lambda: len(self._shared.get((sequence, iteration), {}))
+                == self.spec.agent_count, self.peer_timeout_s)
+            if not arrived:
+                return None
+            received = self._shared[(sequence, iteration)]
+            return np.array([received[j] for j in range(self.spec.agent_count)])
 
     def _heartbeat(self, hellos: object) -> None:
         host = socket.gethostname()

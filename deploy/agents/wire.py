@@ -16,7 +16,7 @@ from dataclasses import dataclass
 import numpy as np
 from google.protobuf.message import DecodeError
 
-from core.nmpc.admm_executor import LocalSolveRequest, LocalSolverSpec
+from core.nmpc.admm_executor import AgentAdmm, LocalSolveRequest, LocalSolverSpec
 from core.nmpc.nlp_solver import NlpSolution, SolveStats
 from core.nmpc.stagewise_nlp import NlpProblem
 from deploy.agents.messages import admm_wire_pb2 as pb
@@ -35,16 +35,30 @@ class WireError(ValueError):
 
 @dataclass(frozen=True)
 class ProblemSizes:
-    """Lengths of the local NLP's vectors: decision, parameters, constraints."""
+    """Lengths of the local NLP's vectors: decision, parameters, constraints, and the shared
+    trajectory s (``parameters.consensus_target``)."""
 
     decision: int
     parameters: int
     constraints: int
+    shared: int = 0
 
     @classmethod
     def of(cls, problem: NlpProblem) -> ProblemSizes:
+        target = problem.parameters.slice("consensus_target")
         return cls(problem.decision.size, problem.parameters.size,
-                   problem.lower_constraints.size)
+                   problem.lower_constraints.size, target.stop - target.start)
+
+
+@dataclass(frozen=True)
+class PeerRequest:
+    """Coordinator-free topology: the update's first local problem, and the ADMM state the
+    agents start from (s-bar, every agent's dual) for ``iterations`` iterations."""
+
+    request: LocalSolveRequest
+    iterations: int
+    consensus: np.ndarray
+    duals: np.ndarray
 
 
 def problem_digest(spec: LocalSolverSpec) -> str:
@@ -100,14 +114,25 @@ def encode_request(request: LocalSolveRequest, team: str, sequence: int, digest:
     ).SerializeToString()
 
 
+def encode_peer_request(peer: PeerRequest, team: str, sequence: int, digest: str) -> bytes:
+    """A request asking the agent to run ``peer.iterations`` ADMM iterations with its peers."""
+    message = pb.SolveRequest()
+    message.ParseFromString(encode_request(peer.request, team, sequence, digest))
+    message.admm_iterations = peer.iterations
+    message.consensus = _pack(peer.consensus)
+    message.duals = _pack(peer.duals)
+    return message.SerializeToString()
+
+
 def encode_stop(team: str, agent: int) -> bytes:
     return pb.SolveRequest(wire_version=WIRE_VERSION, team=team, agent=agent,
                            stop=True).SerializeToString()
 
 
 def decode_request(data: bytes, team: str, agent_count: int, digest: str,
-                   sizes: ProblemSizes) -> tuple[int, LocalSolveRequest | None]:
-    """(sequence, request) of a request for this team's problem; request None for a stop."""
+                   sizes: ProblemSizes) -> tuple[int, LocalSolveRequest | PeerRequest | None]:
+    """(sequence, request) of a request for this team's problem; request None for a stop, a
+    ``PeerRequest`` when the agents are to run the ADMM themselves."""
     message = _parse(pb.SolveRequest, data)
     _check_header(message, team, agent_count)
     assert isinstance(message, pb.SolveRequest)
@@ -120,48 +145,95 @@ def decode_request(data: bytes, team: str, agent_count: int, digest: str,
                     _unpack(message.bound_multipliers, n, "bound multipliers"))
                    if message.has_multipliers else (None, None))
     # Bounds may be infinite (free variables); guesses and parameters may not.
-    return message.sequence, LocalSolveRequest(
+    request = LocalSolveRequest(
         agent=message.agent, initial_guess=_unpack(message.initial_guess, n, "initial guess"),
         parameters=_unpack(message.parameters, sizes.parameters, "parameters"),
         lower_bounds=_unpack(message.lower_bounds, n, "lower bounds", finite=False),
         upper_bounds=_unpack(message.upper_bounds, n, "upper bounds", finite=False),
         constraint_multipliers=multipliers[0], bound_multipliers=multipliers[1],
         warm_start=message.warm_start, update=message.update, iteration=message.iteration)
+    if message.admm_iterations == 0:
+        return message.sequence, request
+    duals = _unpack(message.duals, agent_count * sizes.shared, "duals")
+    return message.sequence, PeerRequest(
+        request, message.admm_iterations, _unpack(message.consensus, sizes.shared, "consensus"),
+        duals.reshape(agent_count, sizes.shared))
+
+
+def encode_shared(team: str, agent: int, sequence: int, update: int, iteration: int,
+                  shared: np.ndarray) -> bytes:
+    return pb.SharedTrajectory(wire_version=WIRE_VERSION, team=team, agent=agent,
+                               sequence=sequence, update=update, iteration=iteration,
+                               shared=_pack(shared)).SerializeToString()
+
+
+def decode_shared(data: bytes, team: str, agent_count: int, sizes: ProblemSizes
+                  ) -> tuple[int, int, int, np.ndarray]:
+    """(agent, sequence, iteration, s^agent) of a peer's shared trajectory."""
+    message = _parse(pb.SharedTrajectory, data)
+    _check_header(message, team, agent_count)
+    assert isinstance(message, pb.SharedTrajectory)
+    return (message.agent, message.sequence, message.iteration,
+            _unpack(message.shared, sizes.shared, "shared trajectory"))
+
+
+def _stats(s: SolveStats) -> pb.SolveStats:
+    return pb.SolveStats(status=s.status, success=s.success, iterations=s.iterations,
+                         wall_time_s=s.wall_time_s, objective=s.objective,
+                         constraint_violation=s.constraint_violation, cpu_time_s=s.cpu_time_s)
+
+
+def _from_stats(s: pb.SolveStats) -> SolveStats:
+    return SolveStats(s.status, s.success, s.iterations, s.wall_time_s,
+                      s.objective if math.isfinite(s.objective) else math.nan,
+                      s.constraint_violation, s.cpu_time_s)
 
 
 def encode_reply(solution: NlpSolution, team: str, agent: int, sequence: int,
-                 request: LocalSolveRequest) -> bytes:
-    s = solution.stats
-    stats = pb.SolveStats(status=s.status, success=s.success, iterations=s.iterations,
-                          wall_time_s=s.wall_time_s, objective=s.objective,
-                          constraint_violation=s.constraint_violation, cpu_time_s=s.cpu_time_s)
-    return pb.SolveReply(
+                 request: LocalSolveRequest, run: AgentAdmm | None = None) -> bytes:
+    """A local solution (``run``: the agent's whole coordinator-free ADMM run with it)."""
+    reply = pb.SolveReply(
         wire_version=WIRE_VERSION, team=team, agent=agent, sequence=sequence,
         update=request.update, iteration=request.iteration, decision=_pack(solution.decision),
         constraint_multipliers=_pack(solution.constraint_multipliers),
-        bound_multipliers=_pack(solution.bound_multipliers), stats=stats,
-    ).SerializeToString()
+        bound_multipliers=_pack(solution.bound_multipliers), stats=_stats(solution.stats))
+    if run is not None:
+        for stats, shared, consensus in zip(run.stats, run.shared, run.consensus,
+                                            strict=False):
+            reply.admm.add(stats=_stats(stats), shared=_pack(shared),
+                           consensus=_pack(consensus))
+        reply.duals = _pack(run.duals)
+        reply.admm_failure = run.failure
+    return reply.SerializeToString()
 
 
 def decode_reply(data: bytes, team: str, agent_count: int, sizes: ProblemSizes
-                 ) -> tuple[int, int, NlpSolution]:
-    """(agent, sequence, solution) of a reply. A failed solve may carry non-finite values
-    (the ADMM replaces them); a successful one may not."""
+                 ) -> tuple[int, int, NlpSolution, AgentAdmm | None]:
+    """(agent, sequence, solution, the agent's coordinator-free run or None) of a reply. A
+    failed solve may carry non-finite values (the ADMM replaces them); a successful one may
+    not."""
     message = _parse(pb.SolveReply, data)
     _check_header(message, team, agent_count)
     assert isinstance(message, pb.SolveReply)
-    s = message.stats
-    success = s.success
+    success = message.stats.success
     n = sizes.decision
     solution = NlpSolution(
         _unpack(message.decision, n, "decision", finite=success),
         _unpack(message.constraint_multipliers, sizes.constraints, "constraint multipliers",
                 finite=success),
         _unpack(message.bound_multipliers, n, "bound multipliers", finite=success),
-        SolveStats(s.status, success, s.iterations, s.wall_time_s,
-                   s.objective if math.isfinite(s.objective) else math.nan,
-                   s.constraint_violation, s.cpu_time_s))
-    return message.agent, message.sequence, solution
+        _from_stats(message.stats))
+    run = None
+    if message.admm or message.duals or message.admm_failure:
+        m = sizes.shared
+        run = AgentAdmm(
+            solution, [_from_stats(i.stats) for i in message.admm],
+            [_unpack(i.shared, m, "shared trajectory") for i in message.admm],
+            [_unpack(i.consensus, m, "consensus") for i in message.admm],
+            _unpack(message.duals, agent_count * m, "duals").reshape(agent_count, m)
+            if message.duals else None,
+            message.admm_failure)
+    return message.agent, message.sequence, solution, run
 
 
 def encode_hello(team: str, agent: int, digest: str, host: str, pid: int, solved: int) -> bytes:

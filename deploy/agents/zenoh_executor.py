@@ -1,5 +1,8 @@
-"""ADMM local solves on ``porter agent`` processes over Zenoh (the paper's coordinator topology:
-this process, the NMPC loop, computes the consensus and the duals; agents solve).
+"""ADMM local solves on ``porter agent`` processes over Zenoh. Two topologies
+(``AgentNetwork.topology``): ``coordinator`` (the paper's: this process, the NMPC loop,
+computes the consensus and the duals; agents solve, one request per agent and iteration) and
+``peer`` (coordinator-free: one request per agent and update, the agents exchange their s^i
+and each computes s-bar and every dual itself; ``run_admm``).
 
 Each round publishes one ``SolveRequest`` per agent and waits up to ``reply_timeout_s`` for
 the replies of that round; a silent agent yields a failed solve for its robot (the ADMM's and
@@ -19,9 +22,10 @@ import time
 from collections import Counter
 from pathlib import Path
 
+import numpy as np
 import yaml
 
-from core.nmpc.admm_executor import LocalSolveRequest, LocalSolverSpec
+from core.nmpc.admm_executor import AgentAdmm, LocalSolveRequest, LocalSolverSpec
 from core.nmpc.nlp_solver import NlpSolution
 from core.nmpc.transport_problem import build_transport_problem
 from deploy.agents import wire
@@ -55,6 +59,8 @@ class ZenohExecutor:
         self.hellos: dict[int, wire.pb.Hello] = {}  # each agent's latest
         self._sequence = 0
         self._replies: dict[int, NlpSolution] = {}
+        self._runs: dict[int, AgentAdmm | None] = {}
+        self.runs_admm = network.topology == "peer"  # DistributedMpc hands over whole updates
         self._condition = threading.Condition()
         self._processes: list[subprocess.Popen[bytes]] = []
         self._stderr: list[tempfile._TemporaryFileWrapper[bytes]] = []
@@ -78,7 +84,11 @@ class ZenohExecutor:
         return [sys.executable, "-m", "deploy.cli", "agent", "--settings", str(settings_file),
                 "--agents", str(self.spec.agent_count), "--index", str(agent),
                 "--team", self.team, "--key-prefix", self.key_prefix,
-                "--connect", self.endpoints[0], "--parent-pid", str(os.getpid())]
+                "--connect", self.endpoints[0], "--parent-pid", str(os.getpid()),
+                "--peer-timeout", f"{self.network.reply_timeout_s:g}",
+                # an endpoint of its own on the coordinator's host: peers find one another
+                # through the coordinator's session (Zenoh gossip) and talk directly
+                "--listen", _same_host_any_port(self.endpoints[0])]
 
     def _spawn_agents(self) -> None:
         handle, name = tempfile.mkstemp(prefix="porter-agent-", suffix=".yaml")
@@ -129,7 +139,7 @@ class ZenohExecutor:
 
     def _on_reply(self, sample: object) -> None:
         try:
-            agent, sequence, solution = wire.decode_reply(
+            agent, sequence, solution, run = wire.decode_reply(
                 sample.payload.to_bytes(), self.team,  # type: ignore[attr-defined]
                 self.spec.agent_count, self.sizes)
         except wire.WireError as error:
@@ -140,6 +150,7 @@ class ZenohExecutor:
                 self.late_replies += 1
                 return
             self._replies[agent] = solution
+            self._runs[agent] = run
             self._condition.notify_all()
 
     def _reject(self, error: wire.WireError) -> None:
@@ -147,27 +158,58 @@ class ZenohExecutor:
             self.rejected[error.reason.split(":")[0]] += 1
 
     # --- LocalSolveExecutor -------------------------------------------------------------------
-    def solve_all(self, requests: list[LocalSolveRequest]) -> list[NlpSolution]:
-        with self._condition:
-            self._sequence += 1
-            self._replies = {}
-            sequence = self._sequence
-        for request in requests:
-            self._publishers[request.agent].put(
-                wire.encode_request(request, self.team, sequence, self.digest))
-        wanted = {request.agent for request in requests}
-        deadline = time.monotonic() + self.network.reply_timeout_s
+    def _round(self, messages: list[tuple[int, bytes]], timeout_s: float
+               ) -> tuple[dict[int, NlpSolution], dict[int, AgentAdmm | None]]:
+        """Send one message per agent (encoded with this round's sequence), wait for their
+        replies up to ``timeout_s``: the replies that came, by agent."""
+        for agent, message in messages:
+            self._publishers[agent].put(message)
+        wanted = {agent for agent, _ in messages}
+        deadline = time.monotonic() + timeout_s
         with self._condition:
             while not wanted <= set(self._replies):
                 remaining = deadline - time.monotonic()
                 if remaining <= 0:
                     break
                 self._condition.wait(remaining)
-            replies = dict(self._replies)
+            return dict(self._replies), dict(self._runs)
+
+    def _next_sequence(self) -> int:
+        with self._condition:
+            self._sequence += 1
+            self._replies, self._runs = {}, {}
+            return self._sequence
+
+    def solve_all(self, requests: list[LocalSolveRequest]) -> list[NlpSolution]:
+        sequence = self._next_sequence()
+        replies, _ = self._round(
+            [(r.agent, wire.encode_request(r, self.team, sequence, self.digest))
+             for r in requests], self.network.reply_timeout_s)
         return [replies[r.agent] if r.agent in replies else failed_solution(
                     r, f"agent {r.agent} did not answer within "
                        f"{self.network.reply_timeout_s:g} s")
                 for r in requests]
+
+    def run_admm(self, requests: list[LocalSolveRequest], consensus: np.ndarray,
+                 duals: np.ndarray, iterations: int) -> list[AgentAdmm]:
+        """Coordinator-free: each agent runs the update's ``iterations`` ADMM iterations with
+        its peers from ``consensus`` and ``duals``; each agent's run (a silent agent: a failed
+        one, its warm start kept)."""
+        sequence = self._next_sequence()
+        messages = [(r.agent, wire.encode_peer_request(
+            wire.PeerRequest(r, iterations, consensus, duals), self.team, sequence,
+            self.digest)) for r in requests]
+        replies, runs = self._round(messages, iterations * self.network.reply_timeout_s)
+        out = []
+        for request in requests:
+            run = runs.get(request.agent)
+            if request.agent in replies and run is not None:
+                out.append(run)
+                continue
+            reason = (f"agent {request.agent} did not answer within "
+                      f"{iterations * self.network.reply_timeout_s:g} s")
+            out.append(AgentAdmm(failed_solution(request, reason), failure=reason))
+        return out
 
     def close(self) -> None:
         for agent, publisher in enumerate(getattr(self, "_publishers", [])):
@@ -187,3 +229,10 @@ class ZenohExecutor:
         if self._settings_file is not None:
             self._settings_file.unlink(missing_ok=True)
             self._settings_file = None
+
+
+def _same_host_any_port(endpoint: str) -> str:
+    """``tcp/127.0.0.1:7447`` -> ``tcp/127.0.0.1:0`` (the agent picks a free port)."""
+    protocol, _, address = endpoint.partition("/")
+    host = address.rpartition(":")[0]
+    return f"{protocol}/{host}:0"

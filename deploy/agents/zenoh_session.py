@@ -10,6 +10,7 @@ from __future__ import annotations
 import json
 import re
 import socket
+from typing import Literal
 
 import zenoh
 from pydantic import Field, field_validator
@@ -29,10 +30,14 @@ class AgentNetwork(StrictModel):
     (None: ``porter/<scenario>/<process id>``, unique per run). ``spawn_agents``: porter
     starts one ``porter agent`` process per robot on this machine; False waits for agents
     started elsewhere. ``reply_timeout_s``: an agent silent this long in a round is a failed
-    local solve (the ADMM's failure rules apply); ``start_timeout_s``: how long to wait for
+    local solve (the ADMM's failure rules apply; with ``topology: peer`` per ADMM iteration,
+    also between peers); ``start_timeout_s``: how long to wait for
     every agent's hello (a cold agent compiles its NLP, about a minute)."""
 
     listen: list[str] = Field(default_factory=lambda: ["tcp/127.0.0.1:0"], min_length=1)
+    # coordinator: this process computes s-bar and the duals (the paper's); peer: the agents
+    # exchange their s^i and compute them themselves, this process only hands out the updates
+    topology: Literal["coordinator", "peer"] = "coordinator"
     key_prefix: str | None = None
     spawn_agents: bool = True
     reply_timeout_s: float = Field(1.0, gt=0.0, le=60.0)
@@ -87,3 +92,8 @@ def reply_key(prefix: str, agent: int | str) -> str:
 
 def hello_key(prefix: str, agent: int | str) -> str:
     return f"{prefix}/agent/{agent}/hello"
+
+
+def shared_key(prefix: str, agent: int | str) -> str:
+    """Coordinator-free topology: agent's s^i, to every agent of the team."""
+    return f"{prefix}/agent/{agent}/shared"

@@ -63,6 +63,7 @@ def _zenoh_peer(endpoint: str, sizes: wire.ProblemSizes, ready: object) -> None:
         if request is None:
             done.set()
             return
+        assert isinstance(request, LocalSolveRequest)  # the bench sends no peer requests
         session.put("bench/reply", wire.encode_reply(answer, TEAM, 0, sequence, request))
 
     session.declare_subscriber("bench/request", on_request)

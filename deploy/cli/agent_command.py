@@ -29,6 +29,9 @@ def add_agent_parser(commands: argparse._SubParsersAction) -> None:
                        help="the coordinator's Zenoh endpoints, e.g. tcp/127.0.0.1:7447")
     agent.add_argument("--listen", nargs="+", default=[],
                        help="endpoints this agent listens on (default: none)")
+    agent.add_argument("--peer-timeout", type=float, default=1.0, metavar="S",
+                       help="coordinator-free topology: a peer silent this long fails the "
+                            "update (default 1 s)")
     agent.add_argument("--parent-pid", type=int, help=argparse.SUPPRESS)
     agent.set_defaults(handler=run_agent)
 
@@ -58,7 +61,8 @@ def run_agent(args: argparse.Namespace) -> int:
         return 2
     spec = LocalSolverSpec(settings, agent_count, CompiledCodeCache())
     agent = AdmmAgent(spec, AgentAddress(team, args.index, args.key_prefix, args.connect,
-                                         args.listen), parent_pid=args.parent_pid)
+                                         args.listen), parent_pid=args.parent_pid,
+                      peer_timeout_s=args.peer_timeout)
     print(f"porter agent {args.index} of team {team!r}: problem {agent.digest}, serving on "
           f"{args.key_prefix}", file=sys.stderr, flush=True)
     agent.serve()

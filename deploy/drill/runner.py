@@ -221,7 +221,9 @@ def _judge(fault: DrillFault, code: int, summary: dict[str, Any] | None, stderr:
         wanted = 2 if fault.expect == "refused" else 1
         text = stderr if summary is None else stderr + json.dumps(summary)
         passed = code == wanted and fault.cause in text
-        detail = next((line.strip() for line in stderr.splitlines() if fault.cause in line),
+        # the last line naming the cause: the error or the pre-flight report, not a banner
+        detail = next((line.strip() for line in reversed(stderr.splitlines())
+                       if fault.cause in line),
                       stderr.strip().splitlines()[-1] if stderr.strip() else "")
         return DrillRow(fault.name, fault.expect, passed, None, "-" if summary is None
                         else summary.get("final_state", "-"), None, log, code, detail[:110])

@@ -8,13 +8,13 @@ import math
 import numpy as np
 import pytest
 
-from core.nmpc.admm_executor import LocalSolveRequest, LocalSolverSpec
+from core.nmpc.admm_executor import AgentAdmm, LocalSolveRequest, LocalSolverSpec
 from core.nmpc.nlp_solver import NlpSolution, SolveStats
 from core.nmpc.settings import MpcSettings
 from deploy.agents import wire
 from deploy.agents.messages import admm_wire_pb2 as pb
 
-SIZES = wire.ProblemSizes(decision=7, parameters=5, constraints=3)
+SIZES = wire.ProblemSizes(decision=7, parameters=5, constraints=3, shared=4)
 TEAM, AGENTS, DIGEST = "team_a", 2, "abc123"
 
 
@@ -55,20 +55,56 @@ def test_a_cold_request_has_no_multipliers_and_a_stop_has_no_request() -> None:
 def test_a_reply_round_trips_and_a_failed_one_may_carry_nan() -> None:
     stats = SolveStats("Solve_Succeeded", True, 3, 0.004, 1.5, 1e-9, 0.003)
     solution = NlpSolution(np.arange(7.0), np.arange(3.0), np.arange(7.0) * 2, stats)
-    agent, sequence, decoded = wire.decode_reply(
+    agent, sequence, decoded, run = wire.decode_reply(
         wire.encode_reply(solution, TEAM, 1, 9, _request()), TEAM, AGENTS, SIZES)
-    assert (agent, sequence) == (1, 9) and decoded.stats == stats
+    assert (agent, sequence) == (1, 9) and decoded.stats == stats and run is None
     np.testing.assert_array_equal(decoded.decision, solution.decision)
     failed = NlpSolution(np.full(7, np.nan), np.zeros(3), np.zeros(7),
                          SolveStats("Infeasible", False, 50, 0.1, math.nan, math.inf))
-    _, _, decoded = wire.decode_reply(wire.encode_reply(failed, TEAM, 0, 9, _request(agent=0)),
-                                      TEAM, AGENTS, SIZES)
+    _, _, decoded, _ = wire.decode_reply(
+        wire.encode_reply(failed, TEAM, 0, 9, _request(agent=0)), TEAM, AGENTS, SIZES)
     assert not decoded.stats.success and np.isnan(decoded.decision).all()
     # a successful reply with a NaN is a corrupt message
     corrupt = NlpSolution(np.full(7, np.nan), np.zeros(3), np.zeros(7), stats)
     with pytest.raises(wire.WireError, match="decision is not finite"):
         wire.decode_reply(wire.encode_reply(corrupt, TEAM, 0, 9, _request(agent=0)), TEAM,
                           AGENTS, SIZES)
+
+
+def test_the_coordinator_free_messages_round_trip() -> None:
+    """A peer request carries the ADMM state the agents start from; a shared trajectory goes
+    to every agent; a reply carries the agent's whole run (or why it stopped)."""
+    rng = np.random.default_rng(3)
+    consensus, duals = rng.normal(size=4), rng.normal(size=(AGENTS, 4))
+    peer = wire.PeerRequest(_request(), 2, consensus, duals)
+    sequence, decoded = wire.decode_request(wire.encode_peer_request(peer, TEAM, 5, DIGEST),
+                                            TEAM, AGENTS, DIGEST, SIZES)
+    assert sequence == 5 and isinstance(decoded, wire.PeerRequest) and decoded.iterations == 2
+    np.testing.assert_array_equal(decoded.consensus, consensus)
+    np.testing.assert_array_equal(decoded.duals, duals)
+    np.testing.assert_array_equal(decoded.request.parameters, _request().parameters)
+    shared = rng.normal(size=4)
+    assert wire.decode_shared(wire.encode_shared(TEAM, 1, 5, 12, 1, shared), TEAM, AGENTS,
+                              SIZES)[:3] == (1, 5, 1)
+    with pytest.raises(wire.WireError, match="shared trajectory has 3 values"):
+        wire.decode_shared(wire.encode_shared(TEAM, 1, 5, 12, 1, shared[:3]), TEAM, AGENTS,
+                           SIZES)
+    with pytest.raises(wire.WireError, match="foreign team"):
+        wire.decode_shared(wire.encode_shared("team_b", 1, 5, 12, 1, shared), TEAM, AGENTS,
+                           SIZES)
+    stats = SolveStats("Solve_Succeeded", True, 1, 0.002, 1.0, 0.0, 0.002)
+    solution = NlpSolution(np.arange(7.0), np.arange(3.0), np.arange(7.0), stats)
+    run = AgentAdmm(solution, [stats, stats], [shared, shared + 1], [consensus, consensus * 2],
+                    duals)
+    _, _, _, back = wire.decode_reply(wire.encode_reply(solution, TEAM, 1, 5, _request(), run),
+                                      TEAM, AGENTS, SIZES)
+    assert back is not None and back.failure == "" and back.stats == [stats, stats]
+    np.testing.assert_array_equal(back.consensus[1], consensus * 2)
+    np.testing.assert_array_equal(back.duals, duals)
+    stopped = AgentAdmm(solution, [stats], [shared], [], None, "a peer was silent")
+    _, _, _, back = wire.decode_reply(
+        wire.encode_reply(solution, TEAM, 1, 5, _request(), stopped), TEAM, AGENTS, SIZES)
+    assert back is not None and back.failure == "a peer was silent" and back.duals is None
 
 
 @pytest.mark.parametrize(("data", "reason"), [

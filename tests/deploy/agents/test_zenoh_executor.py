@@ -152,3 +152,33 @@ def test_a_killed_agent_is_a_failed_solve_for_its_robot_only(run: SimRun) -> Non
         assert not plan.success
     finally:
         executor.close()
+
+
+def test_coordinator_free_agents_reach_the_coordinators_consensus(
+        run: SimRun, executor: ZenohExecutor) -> None:
+    """``topology: peer``: the agents exchange their s^i over Zenoh and each computes s-bar
+    and every dual; on the same inputs they land where the coordinator over Zenoh lands (the
+    same agent processes' kernels: to rounding), and agree among themselves (no warning)."""
+    spec = LocalSolverSpec(run.control.settings, 2, run.control.cache)
+    peers = ZenohExecutor(spec, AgentNetwork(reply_timeout_s=2.0, topology="peer"), "two_go2")
+    try:
+        team = TeamModel.from_settings(run.scenario.team_settings(), srb_parameters)
+        coordinated = DistributedMpc(team, run.control.settings, executor=executor)
+        free = DistributedMpc(team, run.control.settings, executor=peers)
+        assert free.peer_topology and peers.runs_admm
+        for t in (0.0, 0.05):
+            inputs = _inputs(run, t)
+            central, shared = coordinated.update(inputs), free.update(inputs)
+            assert shared.success and not shared.warnings, shared.warnings
+            np.testing.assert_allclose(shared.consensus_trajectory,
+                                       central.consensus_trajectory, rtol=0, atol=1e-9)
+            np.testing.assert_allclose(shared.grf, central.grf, rtol=0, atol=1e-9)
+        assert peers.rejected == {} and peers.late_replies == 0
+        os.kill(peers.hellos[1].pid, signal.SIGKILL)  # a dead peer: nobody can agree
+        time.sleep(0.2)
+        plan = free.update(_inputs(run, 0.1))
+        assert not plan.success and all(not s.success for s in plan.solves)
+        statuses = " ".join(s.status for s in plan.solves)
+        assert "agent 1 did not answer" in statuses and "silent" in statuses, statuses
+    finally:
+        peers.close()
