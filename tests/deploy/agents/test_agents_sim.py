@@ -162,7 +162,8 @@ def test_a_killed_agent_mid_run_ends_in_the_supervisors_safe_stop() -> None:
     safety = summary["safety"]
     assert safety["safe_stop"] is not None and "NMPC solver failed" in safety["safe_stop"], safety
     # max 3 consecutive failed updates: the 4th trips; only agent 1's solves failed, one per
-    # ADMM round (two per update)
-    assert safety["nmpc_failed_updates"] == 4 and summary["failed_solves"] == 8
+    # ADMM round (two per update), the first failed update's first round possibly answered
+    # before the kill landed between its two rounds (7 then; agent 0 failing too: up to 16)
+    assert safety["nmpc_failed_updates"] == 4 and summary["failed_solves"] in (7, 8)
     assert [t.split(" -> ")[1].split(":")[0] for t in safety["transitions"][1:]] == [
         "SAFE_STOP", "DONE"]
