@@ -19,8 +19,8 @@ from deploy.runtime.sim_run import SimRun
 
 
 def variant_scenario(scenario: Scenario, variant: Variant, executor: str) -> Scenario:
-    controller = scenario.controller.model_copy(update={**variant.controller,
-                                                        "executor": executor})
+    controller = scenario.controller.model_copy(update={
+        **variant.controller, "executor": variant.executor or executor})
     return scenario.model_copy(update={"controller": controller})
 
 

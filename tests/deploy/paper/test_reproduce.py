@@ -38,6 +38,9 @@ def test_porter_paper_delay_runs_its_variants_and_writes_json_and_png(
     nominal = rows["nominal"]["metrics"]["admm_residual_rms.force_n"]
     assert rows["delayed, fresh <= 2 rounds (porter)"]["metrics"][
         "admm_residual_rms.force_n"] > nominal
+    # the same channel on messages that crossed Zenoh (agent processes)
+    assert rows["delayed, fresh <= 2, over Zenoh agents"]["metrics"][
+        "admm_residual_rms.force_n"] > nominal
     assert len(result["series"]["nominal"]["force_residual_n"]) >= 25  # 60 Hz for 0.5 s
     png = (tmp_path / "delay.png").read_bytes()
     assert png.startswith(b"\x89PNG") and len(png) > 10_000
