@@ -211,12 +211,14 @@ class DistributedMpc:
         without a coordinator. They must agree on s-bar (same inputs, same arithmetic): a
         disagreement is a warning. One agent that stopped early fails the whole update."""
         solutions = [run.solution for run in runs]
-        if any(run.failure or len(run.consensus) != iterations for run in runs):
-            shared = np.array([self.problem.shared_trajectory(s.decision) for s in solutions])
-            stats = [replace(s.stats, success=False) if not run.failure
-                     and len(run.consensus) != iterations else s.stats
-                     for s, run in zip(solutions, runs, strict=True)]
+        if any(run.failure for run in runs):
+            # an agent that finished still followed an s-bar its stopped peer never shared in:
+            # its solve counts as failed too
+            stats = [replace(run.solution.stats, success=False,
+                             status=run.solution.stats.status if run.failure
+                             else "a peer stopped the update") for run in runs]
             solutions = [replace(s, stats=st) for s, st in zip(solutions, stats, strict=True)]
+            shared = np.array([self.problem.shared_trajectory(s.decision) for s in solutions])
             record = self._residuals(shared - consensus, np.zeros_like(consensus), stats)
             return solutions, [record], consensus, duals, []
         records, previous = [], consensus

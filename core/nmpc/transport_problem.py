@@ -20,6 +20,7 @@ problems (local, centralized) instead of n_A + 1 per robot mix.
 from __future__ import annotations
 
 from dataclasses import dataclass
+from functools import cached_property
 
 import casadi as ca
 import numpy as np
@@ -85,10 +86,13 @@ class TransportProblem:
             raise ValueError(f"a local problem needs an agent index in [0, {self.agent_count})")
         return agent
 
+    @cached_property
+    def _shared_indices(self) -> np.ndarray:
+        return shared_indices(self.nlp.decision, self.horizon_steps, self.agent_count)
+
     def shared_trajectory(self, solution: np.ndarray) -> np.ndarray:
         """s = (payload states k = 1..N, then wrench j = 1..n_A over k = 0..N-1) from a solution."""
-        return np.asarray(solution)[shared_indices(self.nlp.decision, self.horizon_steps,
-                                                   self.agent_count)]
+        return np.asarray(solution)[self._shared_indices]
 
     def consensus_weights(self) -> np.ndarray:
         return consensus_weights(self.settings, self.agent_count)

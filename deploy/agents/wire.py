@@ -102,7 +102,8 @@ def _check_header(message: object, team: str, agent_count: int) -> None:
                               f"{agent_count}")
 
 
-def encode_request(request: LocalSolveRequest, team: str, sequence: int, digest: str) -> bytes:
+def _request_message(request: LocalSolveRequest, team: str, sequence: int, digest: str
+                     ) -> pb.SolveRequest:
     warm = request.constraint_multipliers is not None and request.bound_multipliers is not None
     return pb.SolveRequest(
         wire_version=WIRE_VERSION, team=team, agent=request.agent, sequence=sequence,
@@ -110,14 +111,16 @@ def encode_request(request: LocalSolveRequest, team: str, sequence: int, digest:
         initial_guess=_pack(request.initial_guess), parameters=_pack(request.parameters),
         lower_bounds=_pack(request.lower_bounds), upper_bounds=_pack(request.upper_bounds),
         has_multipliers=warm, constraint_multipliers=_pack(request.constraint_multipliers),
-        bound_multipliers=_pack(request.bound_multipliers), warm_start=request.warm_start,
-    ).SerializeToString()
+        bound_multipliers=_pack(request.bound_multipliers), warm_start=request.warm_start)
+
+
+def encode_request(request: LocalSolveRequest, team: str, sequence: int, digest: str) -> bytes:
+    return _request_message(request, team, sequence, digest).SerializeToString()
 
 
 def encode_peer_request(peer: PeerRequest, team: str, sequence: int, digest: str) -> bytes:
     """A request asking the agent to run ``peer.iterations`` ADMM iterations with its peers."""
-    message = pb.SolveRequest()
-    message.ParseFromString(encode_request(peer.request, team, sequence, digest))
+    message = _request_message(peer.request, team, sequence, digest)
     message.admm_iterations = peer.iterations
     message.consensus = _pack(peer.consensus)
     message.duals = _pack(peer.duals)

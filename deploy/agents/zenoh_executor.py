@@ -31,6 +31,7 @@ from core.nmpc.transport_problem import build_transport_problem
 from deploy.agents import wire
 from deploy.agents.zenoh_session import (
     AgentNetwork,
+    any_port_of,
     concrete_endpoint,
     hello_key,
     open_session,
@@ -88,7 +89,7 @@ class ZenohExecutor:
                 "--peer-timeout", f"{self.network.reply_timeout_s:g}",
                 # an endpoint of its own on the coordinator's host: peers find one another
                 # through the coordinator's session (Zenoh gossip) and talk directly
-                "--listen", _same_host_any_port(self.endpoints[0])]
+                "--listen", any_port_of(self.endpoints[0])]
 
     def _spawn_agents(self) -> None:
         handle, name = tempfile.mkstemp(prefix="porter-agent-", suffix=".yaml")
@@ -230,9 +231,3 @@ class ZenohExecutor:
             self._settings_file.unlink(missing_ok=True)
             self._settings_file = None
 
-
-def _same_host_any_port(endpoint: str) -> str:
-    """``tcp/127.0.0.1:7447`` -> ``tcp/127.0.0.1:0`` (the agent picks a free port)."""
-    protocol, _, address = endpoint.partition("/")
-    host = address.rpartition(":")[0]
-    return f"{protocol}/{host}:0"

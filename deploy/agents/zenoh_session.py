@@ -72,6 +72,12 @@ def concrete_endpoint(endpoint: str) -> str:
         return f"{protocol}/{host}:{probe.getsockname()[1]}"
 
 
+def any_port_of(endpoint: str) -> str:
+    """``tcp/127.0.0.1:7447`` -> ``tcp/127.0.0.1:0``: the same host, a free port."""
+    protocol, _, address = endpoint.partition("/")
+    return f"{protocol}/{address.rpartition(':')[0]}:0"
+
+
 def open_session(listen: list[str], connect: list[str]) -> zenoh.Session:
     """A peer-mode session listening on ``listen`` and connecting to ``connect``."""
     config = zenoh.Config()

@@ -109,3 +109,35 @@ def test_a_silent_peer_fails_the_update_of_every_robot() -> None:
     assert all(not stats.success for stats in plan.solves)
     assert any("silent" in stats.status for stats in plan.solves)
     assert np.all(np.isfinite(plan.grf))  # the warm start stands in: the plan stays usable
+
+
+def test_an_agent_that_finished_fails_too_when_a_peer_stopped() -> None:
+    """One agent completed its iterations, the other stopped: the update fails for both."""
+    mpc, model = settings(), team()
+    spec = LocalSolverSpec(mpc, model.agent_count)
+    controller = DistributedMpc(model, mpc, _ThreadPeers(spec))
+    inputs = inputs_at_start(model, mpc)
+    runs = controller.executor.run_admm(  # type: ignore[attr-defined]
+        *_first_requests(controller, inputs), 2)
+    assert all(not run.failure for run in runs)
+    runs[1].failure = "a peer was silent at ADMM iteration 1"
+    consensus = runs[0].consensus[0]
+    solutions, records, kept, _, _ = controller._from_agents(runs, consensus, runs[0].duals, 2)
+    assert [s.stats.success for s in solutions] == [False, False]
+    assert solutions[0].stats.status == "a peer stopped the update"
+    assert len(records) == 1 and kept is consensus
+
+
+def _first_requests(controller: DistributedMpc, inputs) -> tuple:  # noqa: ANN001
+    """Cold requests of a first update (zero guesses), with zero consensus and duals."""
+    na, problem = controller.team.agent_count, controller.problem
+    size = controller.weights.size
+    requests = []
+    for i in range(na):
+        lower, upper = problem.decision_bounds(inputs.contacts, agent=i)
+        requests.append(LocalSolveRequest(
+            agent=i, initial_guess=np.zeros(problem.nlp.decision.size),
+            parameters=problem.parameter_vector(controller.team, inputs, agent=i,
+                                                consensus_target=np.zeros(size)),
+            lower_bounds=lower, upper_bounds=upper, warm_start=False))
+    return requests, np.zeros(size), np.zeros((na, size))
