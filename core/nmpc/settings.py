@@ -133,12 +133,16 @@ class BrakingSettings(StrictModel):
     barriers used slack) or failed to solve start braking: the payload reference becomes
     ``core.nmpc.reference.BrakingReference`` (decelerate along the current heading at
     ``deceleration_m_s2``, then hold), latched for the rest of the run; ``controlled_stop_s``
-    after braking began the team sits down (a controlled stop, not a safe stop)."""
+    after braking began the team sits down (a controlled stop, not a safe stop).
+    ``blocked_stop_s``: a team that the reference governor has held back this long without a
+    break (no progress along the reference: an obstacle it cannot pass, the CBF deadlock in
+    front of an obstacle on the line) brakes as well, and sits down; None: it waits forever."""
 
     enabled: bool = True
     after_flagged_updates: int = Field(3, ge=1, le=60)
     deceleration_m_s2: float = Field(0.5, gt=0.0, le=5.0)
     controlled_stop_s: float = Field(2.0, gt=0.0, le=30.0)
+    blocked_stop_s: float | None = Field(15.0, gt=1.0, le=600.0)
 
 
 SolverName = Literal["fatrop", "rti", "ipopt", "ipopt-reference"]

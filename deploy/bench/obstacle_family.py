@@ -24,7 +24,7 @@ from deploy.reports.table import Column, render_table
 from deploy.runtime.codegen_cache import CompiledCodeCache
 from deploy.runtime.sim_run import SimRun
 
-__all__ = ["family", "format_table", "outcome", "run_bench", "run_case", "write_json"]
+__all__ = ["family", "format_table", "run_bench", "run_case", "write_json"]
 
 _COUPLING_IN_ROBOT_M = [0.0, 0.0, 0.1343]  # Go2
 _RINGS = {
@@ -106,21 +106,7 @@ def run_case(scenario: Scenario, cache: CompiledCodeCache, baseline: bool = Fals
     finally:
         run.close()
     summary["robots"] = len(scenario.team)
-    summary["outcome"] = outcome(summary)
     return summary
-
-
-def outcome(summary: dict) -> str:
-    """``goal``, ``time out`` (ran its duration short of the goal), ``controlled stop`` or
-    ``safe stop``; ``, N fell`` when robots fell."""
-    safety = summary["safety"]
-    if safety["safe_stop"]:
-        text = "safe stop"
-    elif safety.get("controlled_stop"):
-        text = "controlled stop"
-    else:
-        text = "goal" if summary["reached_goal"] else "time out"
-    return text + (f", {summary['falls']} fell" if summary["falls"] else "")
 
 
 def format_table(rows: list[dict]) -> str:

@@ -106,7 +106,12 @@ def run_sim(args: argparse.Namespace, base_settings: MpcSettings) -> int:
         print(f"wrote {args.json}", file=sys.stderr)
     verdict = ("reached the goal" if summary["reached_goal"] else "did NOT reach the goal")
     if summary["safety"].get("controlled_stop"):
-        verdict += " (controlled stop: plans stayed infeasible, the team braked and sat down)"
+        verdict += (f" (controlled stop: braking since {summary['safety']['braking_since_s']:.2f} s,"
+                    " then the team sat down; the cause is in the transitions)")
+    expected = summary.get("expected_outcome", "goal")
+    verdict += (f"; outcome {summary['outcome']!r}"
+                + (" as the scenario expects" if summary["outcome"] == expected
+                   else f", the scenario expects {expected!r}"))
     print(f"porter sim: {verdict}; falls {summary['falls']}; min h {summary['min_h_m']}",
           file=sys.stderr)
     if stop():

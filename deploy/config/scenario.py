@@ -165,6 +165,10 @@ class Scenario(StrictModel):
     duration_s: float = Field(gt=0)
     seed: int = Field(0, ge=0)
     goal_tolerance_m: float = Field(0.15, gt=0)
+    # How a correct run of this scenario ends (the tests hold every shipped scenario to it; the
+    # summary reports it beside the outcome): at the goal, or in a controlled stop (the team
+    # brakes and sits down short of the goal: no fault, no fall, the margins kept).
+    expected_outcome: Literal["goal", "controlled stop"] = "goal"
 
     @field_validator("team")
     @classmethod

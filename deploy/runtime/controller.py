@@ -145,6 +145,7 @@ class TeamController:
         self.braking_since_s: float | None = None  # when the braking backup took over
         self.reference_held_s = 0.0  # reference-clock time the governor held back
         self.reference_holding = False  # the governor holds the reference at this decision
+        self.held_since_s: float | None = None  # the governor has held without a break since
         self._last_decision_s: float | None = None
         self._flagged_in_row = 0
         self.obstacles = scenario.core_obstacles()
@@ -192,7 +193,7 @@ class TeamController:
         """Standing start at ``start_s``: every leg in stance at its measured foot position."""
         self.start_s = start_s
         self.reference_held_s, self._last_decision_s = 0.0, None
-        self.reference_holding = False
+        self.reference_holding, self.held_since_s = False, None
         for robot, measurement in zip(self.robots, measurements, strict=True):
             state = measurement_state(measurement)
             robot.legs.reset(robot.wbc.srb_state(state), robot.wbc.foot_positions(state))
@@ -218,6 +219,7 @@ class TeamController:
         previous, self._last_decision_s = self._last_decision_s, t
         self.reference_holding = False
         if max_lag_m is None or previous is None or self.braking_since_s is not None:
+            self.held_since_s = None
             return
         desired = self.reference.payload_state(self.reference_time(t))
         speed = float(np.linalg.norm(desired[3:5]))
@@ -226,6 +228,10 @@ class TeamController:
         if lag_m > max_lag_m:
             self.reference_held_s += max(t - previous, 0.0)
             self.reference_holding = True
+            if self.held_since_s is None:
+                self.held_since_s = previous
+        else:
+            self.held_since_s = None
 
     # --- NMPC ----------------------------------------------------------------------------
     def nmpc_inputs(self, t: float, measurements: list[RobotMeasurement], frame: MocapFrame,
@@ -268,13 +274,21 @@ class TeamController:
         return NmpcDecision(t, inputs, frame, self.payload_estimate)
 
     def plan_taken(self, t: float, plan: MpcPlan) -> str | None:
-        """Count ``plan`` (taken at ``t``) toward the braking rule (``MpcSettings.braking``):
-        the cause text when this plan starts the braking backup, else None."""
+        """Count ``plan`` (taken at ``t``) toward the braking rules (``MpcSettings.braking``):
+        the cause text when this plan starts the braking backup (infeasible plans in a row, or
+        a team held back by the reference governor for ``blocked_stop_s``), else None."""
         settings = self.settings.braking
         infeasible = plan.relaxed or not plan.success
         self._flagged_in_row = self._flagged_in_row + 1 if infeasible else 0
-        if (not settings.enabled or self.braking_since_s is not None
-                or self._flagged_in_row < settings.after_flagged_updates):
+        if not settings.enabled or self.braking_since_s is not None:
+            return None
+        held_since_s = self.held_since_s
+        if (settings.blocked_stop_s is not None and held_since_s is not None
+                and t - held_since_s >= settings.blocked_stop_s):
+            self.begin_braking(t)
+            return (f"braking: no progress for {t - held_since_s:.1f} s (the reference held "
+                    f"since {held_since_s:.3f} s: the team is blocked); it holds and sits down")
+        if self._flagged_in_row < settings.after_flagged_updates:
             return None
         self.begin_braking(t)
         what = f"barrier slack {plan.barrier_slack_m:.3f} m" if plan.relaxed else "failed solve"

@@ -121,6 +121,7 @@ class ControlLoop:
             "nmpc_margin_flags": nmpc.margin_flags,
             "nmpc_relaxed_plans": nmpc.relaxed_plans,
             "braking_since_s": self.control.braking_since_s,
+            "reference_held_s": round(self.control.reference_held_s, 3),
             "controlled_stop": self.controlled_stop,
             "recorder_failure": self.recorder_failure,
             "torque_saturations": dict(self.saturations),

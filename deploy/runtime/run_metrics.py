@@ -184,3 +184,17 @@ def _distribution(values_ms: list[float]) -> dict[str, float]:
     values = np.asarray(values_ms) if values_ms else np.zeros(1)
     return {"median": float(np.median(values)), "p95": float(np.percentile(values, 95)),
             "max": float(np.max(values))}
+
+
+def run_outcome(summary: dict) -> str:
+    """How a run ended, from its summary (with ``safety``, the loop's outcome): ``goal``,
+    ``time out`` (ran its duration short of the goal), ``controlled stop`` (braked and sat
+    down, no fault) or ``safe stop`` (a fault: damping); ``, N fell`` when robots fell."""
+    safety = summary["safety"]
+    if safety["safe_stop"]:
+        text = "safe stop"
+    elif safety.get("controlled_stop"):
+        text = "controlled stop"
+    else:
+        text = "goal" if summary["reached_goal"] else "time out"
+    return text + (f", {summary['falls']} fell" if summary["falls"] else "")

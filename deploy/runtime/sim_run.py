@@ -40,7 +40,12 @@ from deploy.runtime.codegen_cache import CompiledCodeCache
 from deploy.runtime.controller import NmpcDecision, TeamController, WbcStep
 from deploy.runtime.links import MocapTracker, TeamLinks
 from deploy.runtime.loop import ControlLoop, LoopSettings
-from deploy.runtime.run_metrics import FALL_HEIGHT_FRACTION, MAX_TILT_RAD, RunMetrics
+from deploy.runtime.run_metrics import (
+    FALL_HEIGHT_FRACTION,
+    MAX_TILT_RAD,
+    RunMetrics,
+    run_outcome,
+)
 from deploy.safety.supervisor import SupervisorSettings
 from drivers.interfaces import RobotDriver
 from drivers.mujoco.scene import PHYSICS_TIMESTEP_S, build_team_scene
@@ -140,6 +145,8 @@ class SimRun:
         self.metrics.stopped_early = loop.stopped_early
         summary = self.metrics.summary()
         summary["safety"] = loop.outcome()
+        summary["outcome"] = run_outcome(summary)
+        summary["expected_outcome"] = self.scenario.expected_outcome
         if self.recording is not None:
             if loop.stopped_early:
                 self.recording.event(sim.time_s, "stop requested: run ended early", level=1)

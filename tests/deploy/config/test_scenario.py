@@ -26,7 +26,9 @@ from deploy.config.scenario import (
 )
 
 SHIPPED = ["four_go2", "heavy_payload_pushes", "mixed_three", "moving_obstacle",
-           "narrow_passage", "two_go2"]
+           "narrow_passage", "obstacle_on_line", "two_go2"]
+# The paper's scenarios (reach the goal); the others end in a controlled stop short of it.
+PAPER = [name for name in SHIPPED if name != "obstacle_on_line"]
 
 
 def base_document() -> dict[str, Any]:
@@ -70,6 +72,9 @@ def test_shipped_scenario_loads_and_is_consistent(name: str) -> None:
     scenario = load_scenario(name)
     assert scenario.name == name
     assert scenario == load_scenario(SCENARIO_DIR / f"{name}.yaml")
+    if name not in PAPER:
+        return  # see test_the_blocked_scenario_blocks_the_path
+    assert scenario.expected_outcome == "goal"
     assert "Paper" in scenario.description
     assert scenario.duration_s <= 16.0
     # The reference reaches its goal about 2 s before the end.
@@ -93,6 +98,23 @@ def test_shipped_scenario_loads_and_is_consistent(name: str) -> None:
             margin = scenario.safety_distance_m + obstacle.radius_m
             assert np.linalg.norm(np.asarray(xy) - obstacle.position_m) > margin
             assert np.linalg.norm(goal + np.asarray(xy) - end) > margin
+
+
+def test_the_blocked_scenario_blocks_the_path() -> None:
+    """obstacle_on_line: a static obstacle whose margin covers the reference line and the
+    front robot's path, far enough that the team starts outside it; a controlled stop is
+    expected, after the blocked-team timeout and before the end."""
+    scenario = load_scenario("obstacle_on_line")
+    assert scenario.expected_outcome == "controlled stop"
+    (obstacle,) = scenario.core_obstacles()
+    assert obstacle.velocity_m_s == (0.0, 0.0) and obstacle.position_m[1] == 0.0
+    start, goal = scenario.reference.waypoints_m[0][0], scenario.reference.waypoints_m[-1][0]
+    assert start < obstacle.position_m[0] < goal
+    blocked_s = scenario.mpc_settings(MpcSettings()).braking.blocked_stop_s
+    assert blocked_s is not None
+    # the team reaches the obstacle within ~6 s (0.3 m/s), then waits blocked_s, brakes for
+    # controlled_stop_s and sits down (2 s) before the end
+    assert scenario.duration_s >= 6.0 + blocked_s + 2.0 + 2.0
 
 
 def test_shipped_scenarios_mirror_the_paper() -> None:

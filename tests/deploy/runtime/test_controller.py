@@ -157,3 +157,49 @@ def test_reference_waits_for_a_team_that_lags_behind(control: TeamController,
     for t in times:
         free.nmpc_inputs(float(t), measurements, frame)
     assert free.reference_held_s == 0.0
+
+
+@pytest.mark.parametrize("blocked_stop_s", [2.0, None])
+def test_a_team_held_back_too_long_brakes(run: SimRun, blocked_stop_s: float | None) -> None:
+    """A team that stands still (blocked) is held by the reference governor; after
+    ``braking.blocked_stop_s`` of holding without a break it brakes (and so sits down), not
+    before; with the rule off (None) it waits for ever."""
+    settings = MpcSettings(braking=BrakingSettings(blocked_stop_s=blocked_stop_s))
+    control = TeamController(run.scenario, build_mpc=False, base_settings=settings)
+    measurements, frame = _read(run)
+    control.reset(measurements, start_s=0.0)
+    period = control.settings.sample_period_s
+    causes = []
+    for t in np.arange(0.0, 12.0, period):
+        control.nmpc_inputs(float(t), measurements, frame)
+        cause = control.plan_taken(float(t), _plan())
+        if cause is not None:
+            causes.append((float(t), cause))
+    if blocked_stop_s is None:
+        assert causes == [] and control.braking_since_s is None
+        assert control.held_since_s is not None and control.reference_held_s > 5.0
+        return
+    (t_brake, cause), = causes
+    assert "no progress" in cause and "blocked" in cause
+    assert control.braking_since_s == t_brake
+    assert isinstance(control.reference, BrakingReference)
+    # it held from when the reference led by max_lag_m; braking blocked_stop_s later
+    max_lag_m = run.scenario.reference.max_lag_m
+    assert max_lag_m is not None
+    held_from = SETTLE_S + max_lag_m / run.scenario.reference.speed_m_s
+    assert t_brake == pytest.approx(held_from + blocked_stop_s, abs=3 * period)
+    assert control.held_since_s is None  # braking: the governor is off
+
+
+def test_a_break_in_the_hold_restarts_the_blocked_clock(control: TeamController,
+                                                        run: SimRun) -> None:
+    measurements, frame = _read(run)
+    period = control.settings.sample_period_s
+    for t in np.arange(0.0, 6.0, period):
+        control.nmpc_inputs(float(t), measurements, frame)
+    held_since = control.held_since_s
+    assert held_since is not None
+    # the team catches up (the estimate jumps to the reference): the hold ends
+    control.reference_held_s = 1e3  # the reference clock back at its start: no lag
+    control.nmpc_inputs(6.0, measurements, frame)
+    assert control.held_since_s is None and not control.reference_holding

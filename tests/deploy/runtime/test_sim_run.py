@@ -95,17 +95,30 @@ def test_delay_compensation_keeps_tracking_close_to_the_lockstep_run() -> None:
 # the rti solver (the default since) it completes with no failed solve.
 @pytest.mark.slow
 @pytest.mark.parametrize("name", shipped_scenarios())
-def test_shipped_scenario_reaches_the_goal_safely(name: str) -> None:
+def test_shipped_scenario_ends_as_expected_and_safely(name: str) -> None:
+    """Every shipped scenario ends as it says (``expected_outcome``): at the goal, or in a
+    controlled stop (braked, sat down, no fault); never a fall, a margin breached, a fault."""
     scenario = load_scenario(name)
     loop = SimRun(scenario, CompiledCodeCache())
     try:
         summary = loop.run()
     finally:
         loop.close()
-    assert summary["duration_s"] == pytest.approx(scenario.duration_s, abs=0.01)
+    assert summary["outcome"] == scenario.expected_outcome, summary["safety"]["transitions"]
+    assert summary["expected_outcome"] == scenario.expected_outcome
     assert summary["falls"] == 0, summary["fallen_robots"]
     assert summary["min_h_m"] >= -0.02, summary["min_h_by_pair_m"]
-    assert summary["reached_goal"], summary["final_goal_distance_m"]
     assert summary["max_coupling_error_m"] < 0.005
     assert summary["wbc_failures"] == 0
     assert summary["safety"]["final_state"] == "DONE" and summary["safety"]["safe_stop"] is None
+    if scenario.expected_outcome == "goal":
+        assert summary["duration_s"] == pytest.approx(scenario.duration_s, abs=0.01)
+        assert summary["reached_goal"], summary["final_goal_distance_m"]
+        assert summary["safety"]["braking_since_s"] is None
+    else:  # blocked: held back, braked after blocked_stop_s, sat down before the end
+        blocked_s = loop.settings.braking.blocked_stop_s
+        assert not summary["reached_goal"] and summary["safety"]["controlled_stop"]
+        assert summary["safety"]["reference_held_s"] >= blocked_s
+        assert summary["duration_s"] < scenario.duration_s
+        assert any("SITTING_DOWN" in text and "no progress" in text
+                   for text in summary["safety"]["transitions"])
