@@ -145,6 +145,22 @@ class BrakingSettings(StrictModel):
     blocked_stop_s: float | None = Field(15.0, gt=1.0, le=600.0)
 
 
+class CapabilitySettings(StrictModel):
+    """What a trotting robot can follow, as bounds on each robot's planned SRB state from stage
+    ``from_stage`` on (earlier stages stay reachable from any measured state): CoM speed per
+    horizontal axis (world) at most ``max_planar_speed_m_s``, CoM height within
+    ``max_height_deviation_m`` of its reference. None lifts a bound. Without them an evasion
+    the barriers demand was planned at 0.9 m/s sideways, or braking pressed the feet down
+    until the trunk rose 6 cm, and the legs could not follow (calves past their limits: falls).
+    A robot measured faster than the limit is planned to slow down to it at
+    ``deceleration_m_s2`` (so the limit can never make the plan infeasible)."""
+
+    max_planar_speed_m_s: float | None = Field(0.5, ge=0.1, le=5.0)
+    max_height_deviation_m: float | None = Field(0.03, ge=0.005, le=0.3)
+    deceleration_m_s2: float = Field(2.0, gt=0.0, le=20.0)
+    from_stage: int = Field(2, ge=1, le=50)
+
+
 SolverName = Literal["fatrop", "rti", "ipopt", "ipopt-reference"]
 
 
@@ -187,3 +203,4 @@ class MpcSettings(StrictModel):
     admm: AdmmSettings = AdmmSettings()
     solver: SolverSettings = SolverSettings()
     braking: BrakingSettings = BrakingSettings()
+    capability: CapabilitySettings = CapabilitySettings()

@@ -97,10 +97,14 @@ class TransportProblem:
     def consensus_weights(self) -> np.ndarray:
         return consensus_weights(self.settings, self.agent_count)
 
-    def decision_bounds(self, contacts: np.ndarray, agent: int | None = None
-                        ) -> tuple[np.ndarray, np.ndarray]:
-        """lbx, ubx: 0 <= f_z <= f_max on stance feet, 0 <= f_z <= 1e-5 N on swing feet, and
-        sigma >= 0 on the barrier slacks (soft barriers).
+    def decision_bounds(self, contacts: np.ndarray, agent: int | None = None,
+                        inputs: MpcInputs | None = None) -> tuple[np.ndarray, np.ndarray]:
+        """lbx, ubx: 0 <= f_z <= f_max on stance feet, 0 <= f_z <= 1e-5 N on swing feet,
+        sigma >= 0 on the barrier slacks (soft barriers), and with ``inputs`` the robots'
+        capability limits (``MpcSettings.capability``) from stage ``from_stage`` on. A robot
+        measured beyond a limit gets what it can reach (a speed falling at ``deceleration_m_s2``
+        to the limit; the height it has plus the ballistic rise or drop of its vertical speed),
+        so a plan never goes further out but the limits never make it infeasible.
 
         Swing feet get a tiny interval rather than lbx = ubx = 0: fatrop warm-started from a
         previous solve took 18.3 iterations per local solve with fixed variables against 5.1
@@ -121,6 +125,22 @@ class TransportProblem:
                 upper[z_rows] = f_max * stance + SWING_FORCE_BOUND_N * (1.0 - stance)
         for k in range(self.horizon_steps if self.soft_barriers else 0):
             lower[d.slice(f"{SLACK_BLOCK}@{k}")] = 0.0
+        limits, ts = self.settings.capability, self.settings.sample_period_s
+        g = self.settings.gravity_m_s2
+        first = limits.from_stage if inputs is not None else self.horizon_steps + 1
+        for key, r in zip(self.robot_keys(), self.robot_indices(agent), strict=True):
+            for k in range(first, self.horizon_steps + 1):
+                start = d.slice(f"robot_{key}@{k}").start  # state (p, v, Theta, omega)
+                assert inputs is not None
+                now = inputs.robot_states[r]
+                if limits.max_planar_speed_m_s is not None:  # faster now: slow down to it
+                    speed = np.maximum(limits.max_planar_speed_m_s, np.abs(now[3:5])
+                                       - limits.deceleration_m_s2 * k * ts)
+                    lower[start + 3:start + 5], upper[start + 3:start + 5] = -speed, speed
+                if limits.max_height_deviation_m is not None:  # outside: go no further out
+                    height, band = inputs.robot_references[r][k - 1][2], limits.max_height_deviation_m
+                    lower[start + 2] = min(height - band, now[2] - min(now[5], 0.0) ** 2 / (2 * g))
+                    upper[start + 2] = max(height + band, now[2] + max(now[5], 0.0) ** 2 / (2 * g))
         return lower, upper
 
     @property

@@ -59,7 +59,7 @@ def accuracy_check(team, settings: MpcSettings, inputs_samples: list, cache
         guess = initial_guess(problem, team, inputs, None, agent=0)
         target = problem.shared_trajectory(guess)
         parameters = problem.parameter_vector(team, inputs, agent=0, consensus_target=target)
-        bounds = problem.decision_bounds(inputs.contacts, agent=0)
+        bounds = problem.decision_bounds(inputs.contacts, agent=0, inputs=inputs)
         a = fast.solve(guess, parameters, *bounds, warm_start=False)
         b = slow.solve(guess, parameters, *bounds, warm_start=False)
         grf = max(grf, float(np.max(np.abs(layout.get(a.decision, "grf_self@0")

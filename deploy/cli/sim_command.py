@@ -109,9 +109,13 @@ def run_sim(args: argparse.Namespace, base_settings: MpcSettings) -> int:
         verdict += (f" (controlled stop: braking since {summary['safety']['braking_since_s']:.2f} s,"
                     " then the team sat down; the cause is in the transitions)")
     expected = summary.get("expected_outcome", "goal")
-    verdict += (f"; outcome {summary['outcome']!r}"
-                + (" as the scenario expects" if summary["outcome"] == expected
-                   else f", the scenario expects {expected!r}"))
+    verdict += f"; outcome {summary['outcome']!r}"
+    if summary["outcome"] == expected:
+        verdict += " as the scenario expects"
+    elif args.duration is not None and summary["outcome"] == "time out":
+        verdict += f" (--duration {args.duration:g} s: the scenario's own length expects {expected!r})"
+    else:
+        verdict += f", the scenario expects {expected!r}"
     print(f"porter sim: {verdict}; falls {summary['falls']}; min h {summary['min_h_m']}",
           file=sys.stderr)
     if stop():

@@ -81,6 +81,9 @@ def test_sim_runs_the_default_scenario_on_mujoco(tmp_path: Path,
     assert set(summary["wbc_tick_ms"]) == {"median", "p95"}
     assert summary["nmpc_update_ms"]["median"] > 0 and summary["wbc_tick_ms"]["median"] > 0
     assert json.loads(captured.out) == summary
+    # a shortened run is no broken expectation
+    assert summary["outcome"] == "time out" and summary["expected_outcome"] == "goal"
+    assert "(--duration 0.5 s: the scenario's own length expects 'goal')" in captured.err
 
 
 def test_sim_rejects_a_bad_scenario_file_naming_the_field(

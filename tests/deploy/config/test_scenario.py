@@ -13,6 +13,7 @@ import yaml
 
 from core.model.obstacles import Obstacle
 from core.nmpc.settings import MpcSettings, SafetySettings
+from deploy.bench.obstacle_family import family
 from deploy.cli.porter import main
 from deploy.config.files import ConfigError, load_settings
 from deploy.config.scenario import (
@@ -25,10 +26,11 @@ from deploy.config.scenario import (
     shipped_scenarios,
 )
 
-SHIPPED = ["four_go2", "heavy_payload_pushes", "mixed_three", "moving_obstacle",
-           "narrow_passage", "obstacle_on_line", "two_go2"]
-# The paper's scenarios (reach the goal); the others end in a controlled stop short of it.
-PAPER = [name for name in SHIPPED if name != "obstacle_on_line"]
+SHIPPED = ["crossing_heavy", "four_go2", "heavy_payload_pushes", "mixed_three",
+           "moving_obstacle", "narrow_passage", "obstacle_on_line", "two_go2"]
+# The paper's scenarios; the others are the hardest cases of `porter bench obstacles` that end
+# safely (crossing_heavy at the goal, obstacle_on_line in a controlled stop).
+PAPER = [name for name in SHIPPED if name not in ("crossing_heavy", "obstacle_on_line")]
 
 
 def base_document() -> dict[str, Any]:
@@ -73,7 +75,7 @@ def test_shipped_scenario_loads_and_is_consistent(name: str) -> None:
     assert scenario.name == name
     assert scenario == load_scenario(SCENARIO_DIR / f"{name}.yaml")
     if name not in PAPER:
-        return  # see test_the_blocked_scenario_blocks_the_path
+        return  # see test_the_obstacle_family_scenarios_are_what_they_say
     assert scenario.expected_outcome == "goal"
     assert "Paper" in scenario.description
     assert scenario.duration_s <= 16.0
@@ -100,10 +102,11 @@ def test_shipped_scenario_loads_and_is_consistent(name: str) -> None:
             assert np.linalg.norm(goal + np.asarray(xy) - end) > margin
 
 
-def test_the_blocked_scenario_blocks_the_path() -> None:
-    """obstacle_on_line: a static obstacle whose margin covers the reference line and the
-    front robot's path, far enough that the team starts outside it; a controlled stop is
-    expected, after the blocked-team timeout and before the end."""
+def test_the_obstacle_family_scenarios_are_what_they_say() -> None:
+    """obstacle_on_line: a static obstacle whose margin covers the reference line, far enough
+    that the team starts outside it; a controlled stop is expected after the blocked-team
+    timeout and before the end. crossing_heavy: the family's cross_3r_12kg_0.3 case (same
+    team, payload, obstacle), run long enough to reach the goal after yielding."""
     scenario = load_scenario("obstacle_on_line")
     assert scenario.expected_outcome == "controlled stop"
     (obstacle,) = scenario.core_obstacles()
@@ -115,6 +118,12 @@ def test_the_blocked_scenario_blocks_the_path() -> None:
     # the team reaches the obstacle within ~6 s (0.3 m/s), then waits blocked_s, brakes for
     # controlled_stop_s and sits down (2 s) before the end
     assert scenario.duration_s >= 6.0 + blocked_s + 2.0 + 2.0
+    heavy = load_scenario("crossing_heavy")
+    case = next(s for s in family() if s.name == "cross_3r_12kg_0.3")
+    assert heavy.expected_outcome == "goal"
+    for field in ("team", "payload", "obstacles", "reference", "safety_distance_m"):
+        assert getattr(heavy, field) == getattr(case, field), field
+    assert heavy.duration_s > case.duration_s
 
 
 def test_shipped_scenarios_mirror_the_paper() -> None:
