@@ -101,8 +101,7 @@ class DistributedMpc:
         inputs.validate(na, self.settings.horizon_steps, self.settings.safety.max_obstacles)
         guesses = [initial_guess(self.problem, self.team, inputs, self._previous[i], agent=i)
                    for i in range(na)]
-        bounds = [self.problem.decision_bounds(inputs.contacts, agent=i,
-                                               inputs=inputs)
+        bounds = [self.problem.decision_bounds(inputs.contacts, agent=i, inputs=inputs)
                   for i in range(na)]
         # Everything but the consensus target is fixed during the update: build it once.
         zero_target = np.zeros(self.weights.size)

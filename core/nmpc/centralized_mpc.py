@@ -51,8 +51,7 @@ class CentralizedMpc:
         guess = initial_guess(self.problem, self.team, inputs, self._previous, agent=None)
         selection = self.problem.select_obstacles(inputs, guess)
         parameters = self.problem.parameter_vector(self.team, inputs, selection=selection)
-        lower, upper = self.problem.decision_bounds(inputs.contacts,
-                                                   inputs=inputs)
+        lower, upper = self.problem.decision_bounds(inputs.contacts, inputs=inputs)
         previous = self._previous
         lam_g, lam_x = (None, None) if previous is None else shifted_multipliers(
             self.problem, previous)

@@ -127,18 +127,18 @@ class TransportProblem:
             lower[d.slice(f"{SLACK_BLOCK}@{k}")] = 0.0
         limits, ts = self.settings.capability, self.settings.sample_period_s
         g = self.settings.gravity_m_s2
-        first = limits.from_stage if inputs is not None else self.horizon_steps + 1
         for key, r in zip(self.robot_keys(), self.robot_indices(agent), strict=True):
-            for k in range(first, self.horizon_steps + 1):
+            if inputs is None:
+                break
+            now, references = inputs.robot_states[r], inputs.robot_references[r]
+            for k in range(limits.from_stage, self.horizon_steps + 1):
                 start = d.slice(f"robot_{key}@{k}").start  # state (p, v, Theta, omega)
-                assert inputs is not None
-                now = inputs.robot_states[r]
                 if limits.max_planar_speed_m_s is not None:  # faster now: slow down to it
                     speed = np.maximum(limits.max_planar_speed_m_s, np.abs(now[3:5])
                                        - limits.deceleration_m_s2 * k * ts)
                     lower[start + 3:start + 5], upper[start + 3:start + 5] = -speed, speed
                 if limits.max_height_deviation_m is not None:  # outside: go no further out
-                    height, band = inputs.robot_references[r][k - 1][2], limits.max_height_deviation_m
+                    height, band = references[k - 1][2], limits.max_height_deviation_m
                     lower[start + 2] = min(height - band, now[2] - min(now[5], 0.0) ** 2 / (2 * g))
                     upper[start + 2] = max(height + band, now[2] + max(now[5], 0.0) ** 2 / (2 * g))
         return lower, upper
