@@ -19,10 +19,7 @@ class BlockLayout:
     prefix: str
     offsets: dict[str, tuple[int, int]] = field(default_factory=dict)
     symbols: list[ca.SX] = field(default_factory=list)
-
-    @property
-    def size(self) -> int:
-        return sum(s.numel() for s in self.symbols)
+    size: int = 0  # total length (kept with ``add``: summing the symbols cost ~0.1 ms a read)
 
     def add(self, name: str, size: int) -> ca.SX:
         if name in self.offsets:
@@ -30,6 +27,7 @@ class BlockLayout:
         symbol = ca.SX.sym(f"{self.prefix}_{name}", size)
         self.offsets[name] = (self.size, size)
         self.symbols.append(symbol)
+        self.size += size
         return symbol
 
     def vector(self) -> ca.SX:
@@ -56,3 +54,34 @@ class BlockLayout:
                 f"got {flat.size} (shape {np.shape(block)})"
             )
         values[target] = flat
+
+
+@dataclass(frozen=True)
+class DecisionRows:
+    """Where the per-stage blocks of a transport problem's decision start, as index arrays,
+    so bounds and guesses are read and written without a Python loop over stages:
+    ``robot_state[key][k]`` and ``payload_state[k]`` (k = 0..N) the first row of that state,
+    ``grf_z[key]`` (N, 4) the rows of each foot's normal force, ``slack`` every barrier-slack row
+    (none without soft barriers)."""
+
+    robot_state: dict[str, np.ndarray]
+    payload_state: np.ndarray
+    grf_z: dict[str, np.ndarray]
+    slack: np.ndarray
+
+    @staticmethod
+    def of(decision: BlockLayout, horizon_steps: int, robot_keys: list[str],
+           slack_block: str = "barrier_slack") -> DecisionRows:
+        def starts(block: str, stages: int) -> np.ndarray:
+            return np.array([decision.offsets[f"{block}@{k}"][0] for k in range(stages)])
+
+        n = horizon_steps
+        slack = ([np.arange(*decision.slice(f"{slack_block}@{k}").indices(decision.size))
+                  for k in range(n)] if f"{slack_block}@0" in decision.offsets else [])
+        return DecisionRows(
+            robot_state={key: starts(f"robot_{key}", n + 1) for key in robot_keys},
+            payload_state=starts("payload", n + 1),
+            grf_z={key: starts(f"grf_{key}", n)[:, None] + np.arange(2, 12, 3)
+                   for key in robot_keys},
+            slack=np.concatenate(slack) if slack else np.zeros(0, dtype=int),
+        )

@@ -64,7 +64,8 @@ class MpcInputs:
             )
         if not np.all(np.isfinite(obstacles)):
             raise InvalidMpcInputError("obstacles: contains NaN or infinite values")
-        if not np.all(np.isin(self.contacts, (0.0, 1.0))):
+        contacts = np.asarray(self.contacts)
+        if not np.all((contacts == 0.0) | (contacts == 1.0)):
             raise InvalidMpcInputError("contacts: flags must be 0 or 1")
 
     def obstacle_parameters(self, max_obstacles: int) -> np.ndarray:

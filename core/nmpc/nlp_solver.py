@@ -109,8 +109,9 @@ class NlpSolver:
             # on HPIPM's robust mode (the fast mode stalls an iterated SQP ~1 N off, measured).
             qp = options["qpsol_options"]
             cold["max_iter"] = settings.max_iterations
-            cold["qpsol_options"] = {**qp, "hpipm": {**qp["hpipm"], "mode": "robust",
-                                                     "iter_max": max(100, qp["hpipm"]["iter_max"])}}
+            # (HPIPM's own robust defaults: the warm steps' barrier and tolerances not applied)
+            cold["qpsol_options"] = {**qp, "hpipm": {
+                "mode": "robust", "iter_max": max(100, settings.qp_max_iterations)}}
         self._cold_solver = (ca.nlpsol(f"{problem.name}_cold", plugin, source, cold)  # type: ignore[call-overload]
                              if cold != options else None)
         self._lbg = problem.lower_constraints
@@ -149,7 +150,10 @@ class NlpSolver:
                     "nx": structure.state_sizes,
                     "nu": structure.input_sizes,
                     "ng": structure.path_constraint_counts,
-                    "hpipm": {"mode": s.qp_mode, "iter_max": s.qp_max_iterations},
+                    "hpipm": {"mode": s.qp_mode, "iter_max": s.qp_max_iterations,
+                              "mu0": s.qp_initial_barrier,
+                              **{residual: s.qp_tolerance for residual in (
+                                  "res_g_max", "res_b_max", "res_d_max", "res_m_max")}},
                     # Unbounded steps get this box (HPIPM has no infinite bounds): far beyond
                     # any step of a position [m], force [N] or velocity here; CasADi's 1e8
                     # made the robust mode stall at its iteration limit (measured).

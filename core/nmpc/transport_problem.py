@@ -39,7 +39,7 @@ from core.model.srb_model import (
 )
 from core.model.team import TeamModel
 from core.nmpc.cbf import OBSTACLE_PARAMETER_SIZE, stagewise_first_order, stagewise_hocbf
-from core.nmpc.layout import BlockLayout
+from core.nmpc.layout import BlockLayout, DecisionRows
 from core.nmpc.mpc_inputs import MpcInputs
 from core.nmpc.obstacle_selection import ObstacleSelection, select_obstacles
 from core.nmpc.settings import MpcSettings
@@ -87,6 +87,11 @@ class TransportProblem:
         return agent
 
     @cached_property
+    def _rows(self) -> DecisionRows:
+        return DecisionRows.of(self.nlp.decision, self.horizon_steps, self.robot_keys(),
+                               SLACK_BLOCK)
+
+    @cached_property
     def _shared_indices(self) -> np.ndarray:
         return shared_indices(self.nlp.decision, self.horizon_steps, self.agent_count)
 
@@ -113,34 +118,31 @@ class TransportProblem:
         ``contacts`` is the team's (n_A, N, 4) stance-flag array (legs FL, FR, RL, RR).
         """
         d = self.nlp.decision
-        lower = np.full(d.size, -np.inf)
-        upper = np.full(d.size, np.inf)
+        lower, upper = np.full(d.size, -np.inf), np.full(d.size, np.inf)
         f_max = self.settings.contact.max_normal_force_n
-        for key, r in zip(self.robot_keys(), self.robot_indices(agent), strict=True):
-            for k in range(self.horizon_steps):
-                block = d.slice(f"grf_{key}@{k}")
-                z_rows = np.arange(block.start + 2, block.stop, 3)
-                lower[z_rows] = 0.0
-                stance = np.asarray(contacts[r][k], dtype=float)
-                upper[z_rows] = f_max * stance + SWING_FORCE_BOUND_N * (1.0 - stance)
-        for k in range(self.horizon_steps if self.soft_barriers else 0):
-            lower[d.slice(f"{SLACK_BLOCK}@{k}")] = 0.0
+        lower[self._rows.slack] = 0.0
         limits, ts = self.settings.capability, self.settings.sample_period_s
         g = self.settings.gravity_m_s2
+        stages = np.arange(limits.from_stage, self.horizon_steps + 1)
         for key, r in zip(self.robot_keys(), self.robot_indices(agent), strict=True):
+            rows, stance = self._rows.grf_z[key], np.asarray(contacts[r], dtype=float)
+            lower[rows] = 0.0
+            upper[rows] = f_max * stance + SWING_FORCE_BOUND_N * (1.0 - stance)
             if inputs is None:
-                break
+                continue
             now, references = inputs.robot_states[r], inputs.robot_references[r]
-            for k in range(limits.from_stage, self.horizon_steps + 1):
-                start = d.slice(f"robot_{key}@{k}").start  # state (p, v, Theta, omega)
-                if limits.max_planar_speed_m_s is not None:  # faster now: slow down to it
-                    speed = np.maximum(limits.max_planar_speed_m_s, np.abs(now[3:5])
-                                       - limits.deceleration_m_s2 * k * ts)
-                    lower[start + 3:start + 5], upper[start + 3:start + 5] = -speed, speed
-                if limits.max_height_deviation_m is not None:  # outside: go no further out
-                    height, band = references[k - 1][2], limits.max_height_deviation_m
-                    lower[start + 2] = min(height - band, now[2] - min(now[5], 0.0) ** 2 / (2 * g))
-                    upper[start + 2] = max(height + band, now[2] + max(now[5], 0.0) ** 2 / (2 * g))
+            starts = self._rows.robot_state[key][stages]  # state (p, v, Theta, omega)
+            if limits.max_planar_speed_m_s is not None:  # faster now: slow down to it
+                speed = np.maximum(limits.max_planar_speed_m_s, np.abs(now[3:5])
+                                   - limits.deceleration_m_s2 * stages[:, None] * ts)
+                planar = starts[:, None] + np.array([3, 4])
+                lower[planar], upper[planar] = -speed, speed
+            if limits.max_height_deviation_m is not None:  # outside: go no further out
+                heights, band = references[stages - 1, 2], limits.max_height_deviation_m
+                lower[starts + 2] = np.minimum(heights - band,
+                                               now[2] - min(now[5], 0.0) ** 2 / (2 * g))
+                upper[starts + 2] = np.maximum(heights + band,
+                                               now[2] + max(now[5], 0.0) ** 2 / (2 * g))
         return lower, upper
 
     @property
@@ -162,17 +164,14 @@ class TransportProblem:
         the smallest predicted h over its bodies along the reference and, if given, the warm
         start ``guess`` (``core.nmpc.obstacle_selection``)."""
         inputs.validate(self.agent_count, self.horizon_steps, self.settings.safety.max_obstacles)
-        d = self.nlp.decision
-        n = self.horizon_steps
         paths = [np.vstack([inputs.payload_state[None, 0:2], inputs.payload_reference[:, 0:2]])]
         if guess is not None:
-            paths.append(np.array([d.get(guess, f"payload@{k}")[0:2] for k in range(n + 1)]))
+            paths.append(np.asarray(guess)[self._rows.payload_state[:, None] + [0, 1]])
         for key, r in zip(self.robot_keys(), self.robot_indices(agent), strict=True):
             paths.append(np.vstack([inputs.robot_states[r][None, 0:2],
                                     inputs.robot_references[r][:, 0:2]]))
             if guess is not None:
-                paths.append(np.array([d.get(guess, f"robot_{key}@{k}")[0:2]
-                                       for k in range(n + 1)]))
+                paths.append(np.asarray(guess)[self._rows.robot_state[key][:, None] + [0, 1]])
         return select_obstacles(np.array(paths), inputs.obstacles,
                                 self.settings.safety.obstacle_slots,
                                 self.settings.sample_period_s)

@@ -68,17 +68,15 @@ def test_reference_configuration_is_never_compiled(tmp_path: Path) -> None:
     assert cache.generated == 0
 
 
-def test_rti_iterated_converges_to_the_interior_point_solution() -> None:
-    """The real-time-iteration path (SQP steps on HPIPM's stage-wise QP) on one fixed local
-    problem with an obstacle near a robot: from a cold start it iterates to fatrop's optimum;
-    warm, it takes one step, which already moves most of the way there."""
+def _local_problem_near_an_obstacle():  # type: ignore[no-untyped-def]
+    """Agent 0's local problem (4 stages) with an obstacle 5 cm outside the front robot's
+    margin: the problem, the solve arguments from a cold guess, and that guess."""
     model = team(("go2", "go2"))
     # Hard barriers: fatrop relaxes every bound by ~1e-8, which a soft barrier's exact penalty
     # (1e5 per m, scaled) turns into a 1e-3 N difference between the two solvers' optima.
     base = MpcSettings(horizon_steps=4, safety=SafetySettings(max_obstacles=1, obstacle_slots=1,
                                                               soft_barriers=False))
     problem = build_transport_problem(base, agent_count=2, local=True)
-    # An obstacle ahead of the front robot, 5 cm outside its margin.
     obstacle = Obstacle((1.3, 0.05), (0.0, 0.0), 0.1)
     inputs = inputs_at_start(model, base, [obstacle])
     assert 0 < np.min(inputs.safety_values()) < 0.1
@@ -86,6 +84,14 @@ def test_rti_iterated_converges_to_the_interior_point_solution() -> None:
     args = (guess, problem.parameter_vector(
         model, inputs, agent=0, consensus_target=problem.shared_trajectory(guess)),
         *problem.decision_bounds(inputs.contacts, agent=0))
+    return problem, args, guess
+
+
+def test_rti_iterated_converges_to_the_interior_point_solution() -> None:
+    """The real-time-iteration path (SQP steps on HPIPM's stage-wise QP) on one fixed local
+    problem with an obstacle near a robot: from a cold start it iterates to fatrop's optimum;
+    warm, it takes one step, which already moves most of the way there."""
+    problem, args, guess = _local_problem_near_an_obstacle()
 
     def solver(name: str, tolerance: float = 1e-8) -> NlpSolver:
         return NlpSolver(problem.nlp, SolverSettings(  # type: ignore[arg-type]
@@ -105,3 +111,25 @@ def test_rti_iterated_converges_to_the_interior_point_solution() -> None:
     assert converged.stats.objective == pytest.approx(exact.stats.objective, rel=1e-5)
     distance = np.linalg.norm(one_step.decision - exact.decision)
     assert distance < 0.05 * np.linalg.norm(guess - exact.decision)
+
+
+def test_rti_warm_steps_take_their_qp_settings() -> None:
+    """``qp_tolerance`` and ``qp_initial_barrier`` reach HPIPM on warm steps: a step whose QP
+    stops at a loose tolerance lands measurably farther from the SQP's own converged point
+    than one at the default; the cold start (to convergence) does not use them."""
+    problem, args, _ = _local_problem_near_an_obstacle()
+
+    def rti(**qp: float) -> NlpSolver:
+        return NlpSolver(problem.nlp, SolverSettings(compiled=False, tolerance=1e-8, **qp))
+
+    default, loose = rti(), rti(qp_tolerance=0.5, qp_initial_barrier=100.0)
+    converged = default.solve(*args, warm_start=False)
+    np.testing.assert_array_equal(loose.solve(*args, warm_start=False).decision,
+                                  converged.decision)
+    near = default.solve(*args)
+    far = loose.solve(*args)
+    assert near.stats.success and far.stats.success
+    assert (np.linalg.norm(far.decision - converged.decision)
+            > 2 * np.linalg.norm(near.decision - converged.decision))
+    with pytest.raises(ValueError, match="qp_tolerance"):
+        SolverSettings(qp_tolerance=2.0)
