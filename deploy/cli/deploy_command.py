@@ -87,7 +87,7 @@ def run_deploy(args: argparse.Namespace) -> int:
         f"{', '.join(config.robots)}, backend {args.backend}, run {duration_s:g} s")
     in_process = config.nmpc.runner == "process"
     control = TeamController(scenario, CompiledCodeCache(), tick_s=1.0 / config.rates.wbc_hz,
-                             build_mpc=not in_process)
+                             build_mpc=not in_process, nmpc_shares_loop=not in_process)
     # Built before the world starts: a cold cache compiles the NLPs for minutes.
     process = (NmpcProcess(scenario, control.settings, control.cache) if in_process else None)
     runner: NmpcRunner | None = process

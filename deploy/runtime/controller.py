@@ -90,17 +90,19 @@ class WbcStep:
     foot_targets_m: np.ndarray
 
 
-def build_team_mpc(scenario: Scenario, settings: MpcSettings, cache: CompiledCodeCache
-                   ) -> CentralizedMpc | DistributedMpc:
+def build_team_mpc(scenario: Scenario, settings: MpcSettings, cache: CompiledCodeCache,
+                   solve_first_here: bool = True) -> CentralizedMpc | DistributedMpc:
     """The scenario's NMPC (centralized, or ADMM with the scenario's executor) on ``settings``
-    (``Scenario.mpc_settings``), its solvers built from ``cache``."""
+    (``Scenario.mpc_settings``), its solvers built from ``cache``. ``solve_first_here``: with
+    the process executor, the first agent's solve runs in this process (False where this
+    interpreter also runs the 500 Hz loop)."""
     team = TeamModel.from_settings(scenario.team_settings(), srb_parameters)
     if scenario.controller.mode == "centralized":
         return CentralizedMpc(team, settings, compiler=cache)
     spec = LocalSolverSpec(settings, team.agent_count, cache)
     executor: ProcessExecutor | ZenohExecutor | None = None
     if scenario.controller.executor == "process":
-        executor = ProcessExecutor(spec)
+        executor = ProcessExecutor(spec, solve_first_here=solve_first_here)
     elif scenario.controller.executor == "zenoh":
         executor = ZenohExecutor(spec, scenario.controller.network, scenario.name)
     return DistributedMpc(team, settings, executor=executor, compiler=cache)
@@ -133,7 +135,7 @@ class TeamController:
     def __init__(self, scenario: Scenario, cache: CompiledCodeCache | None = None,
                  base_settings: MpcSettings | None = None,
                  wbc_settings: WbcSettings | None = None, tick_s: float = WBC_TICK_S,
-                 build_mpc: bool = True) -> None:
+                 build_mpc: bool = True, nmpc_shares_loop: bool = False) -> None:
         self.scenario = scenario
         self.tick_s = tick_s
         self.start_s = 0.0
@@ -160,8 +162,10 @@ class TeamController:
             self.robots.append(RobotControl(agent.name, agent.robot_type, wbc, legs))
         self.estimator = PayloadEstimator(self.team)
         self.cache = cache or CompiledCodeCache()
-        self._controller = (build_team_mpc(scenario, self.settings, self.cache) if build_mpc
-                            else None)
+        # An NMPC thread beside the loop must leave every solve to worker processes.
+        self._controller = (build_team_mpc(scenario, self.settings, self.cache,
+                                           solve_first_here=not nmpc_shares_loop)
+                            if build_mpc else None)
         self.payload_estimate: np.ndarray | None = None
 
     @property
