@@ -1,105 +1,136 @@
-"""ADMM local solves in persistent worker processes: one per agent, each holding its own built
-solver (IPOPT/fatrop in threads scaled only 1.1-1.2x on 2 cores; processes ~1.8x).
+"""ADMM local solves in persistent worker processes, each holding its own built solver
+(IPOPT/fatrop in threads scaled only 1.1-1.2x on 2 cores; processes ~1.8x).
 
-With ``solve_first_here`` the first agent's solve runs in the calling process while the
-workers solve the others' (one worker fewer): the caller would only wait anyway, and it saves
-a round trip and a wake-up per ADMM iteration (2 agents, 2 cores, SRB closed loop: update
-median 9.3 -> 8.1 ms, p95 14.7 -> 10.9 ms, measured). Only for a caller that owns its
-interpreter (the NMPC process, lockstep runs): a solve holds the interpreter lock for ~2 ms.
+The agents are shared out over ``processes`` processes (default: one per CPU core, at most
+one per agent), agent i to process i mod ``processes``; a process solves its agents one after
+the other. More processes than cores only add pipe round trips, wake-ups and contention.
+
+With ``solve_first_here`` process 0 is the calling process: its agents' solves run there while
+the workers solve theirs: the caller would only wait anyway, and it saves a round trip and a
+wake-up per ADMM iteration (2 agents, 2 cores, SRB closed loop: a worker woken on the caller's
+core preempted it before its second request was out; update median 9.3 -> 8.1 ms, p95 14.7 ->
+10.9 ms, measured). Only for a caller that owns its interpreter (the NMPC process, lockstep
+runs): a solve holds the interpreter lock for 1-2 ms.
 
 Requests and solutions cross a pipe as plain arrays. A worker that dies or does not answer in
-time yields a failed ``NlpSolution`` for its agent (status says why), never an exception in
-the control loop.
+time yields a failed ``NlpSolution`` for each of its agents (status says why), never an
+exception in the control loop.
 """
 
 from __future__ import annotations
 
 import contextlib
 import multiprocessing as mp
+import os
 from multiprocessing.connection import Connection
+from multiprocessing.process import BaseProcess
 
 import numpy as np
 
 from core.nmpc.admm_executor import LocalSolveRequest, LocalSolverSpec, solve_request
-from core.nmpc.nlp_solver import NlpSolution, SolveStats
+from core.nmpc.nlp_solver import NlpSolution, NlpSolver, SolveStats
 from deploy.runtime.process_names import name_this_process
 
 
-def _worker(spec: LocalSolverSpec, agent: int, connection: Connection) -> None:
-    name_this_process(f"porter-admm{agent}")
+def _worker(spec: LocalSolverSpec, index: int, connection: Connection) -> None:
+    name_this_process(f"porter-admm{index}")
     solver = spec.build()
     connection.send("ready")
     while True:
         message = connection.recv()
         if message is None:
             return
-        sequence, request = message
-        connection.send((sequence, solve_request(solver, request)))
+        sequence, requests = message
+        connection.send((sequence, [solve_request(solver, request) for request in requests]))
 
 
 class ProcessExecutor:
-    """One worker process per agent; ``solve_all`` runs the agents' solves in parallel."""
+    """Agents' solves in parallel over ``processes`` processes; ``solve_all`` runs one round."""
 
     def __init__(self, spec: LocalSolverSpec, timeout_s: float = 10.0,
-                 start_timeout_s: float = 600.0, solve_first_here: bool = False) -> None:
+                 start_timeout_s: float = 600.0, solve_first_here: bool = False,
+                 processes: int | None = None) -> None:
+        if processes is not None and processes < 1:
+            raise ValueError(f"processes: must be at least 1, got {processes}")
+        count = max(1, min(processes or os.cpu_count() or 1, spec.agent_count))
         context = mp.get_context("spawn")
         self.timeout_s = timeout_s
         self._sequence = 0
+        self._process_of = {agent: agent % count for agent in range(spec.agent_count)}
         self._connections: dict[int, Connection] = {}
-        self._processes: dict[int, mp.process.BaseProcess] = {}
-        self._here = spec.build() if solve_first_here else None
-        for agent in range(1 if solve_first_here else 0, spec.agent_count):
+        self._processes: dict[int, BaseProcess] = {}
+        # Not where this process's solvers would get other kernels than a fresh worker's
+        # (CasADi's BLASFEO loaded first: ~2x slower, other rounding than the workers').
+        kernels = getattr(spec.compiler, "blas_kernels", None)
+        if solve_first_here and kernels is not None and kernels().preempted:
+            solve_first_here = False
+        self._here: NlpSolver | None = spec.build() if solve_first_here else None
+        for index in range(1 if solve_first_here else 0, count):
             parent, child = context.Pipe()
-            process = context.Process(target=_worker, args=(spec, agent, child), daemon=True,
-                                      name=f"porter-admm-agent{agent}")
+            process = context.Process(target=_worker, args=(spec, index, child), daemon=True,
+                                      name=f"porter-admm-agent{index}")
             process.start()
-            self._connections[agent] = parent
-            self._processes[agent] = process
-        for agent, connection in self._connections.items():
+            self._connections[index] = parent
+            self._processes[index] = process
+        for index, connection in self._connections.items():
             if not connection.poll(start_timeout_s) or connection.recv() != "ready":
                 self.close()
-                raise RuntimeError(f"ADMM worker for agent {agent} did not start")
-
-    def solve_all(self, requests: list[LocalSolveRequest]) -> list[NlpSolution]:
-        self._sequence += 1
-        remote = [request for request in requests if request.agent in self._connections]
-        sent = []
-        for request in remote:
-            try:
-                self._connections[request.agent].send((self._sequence, request))
-                sent.append(True)
-            except (BrokenPipeError, OSError):
-                sent.append(False)
-        results: dict[int, NlpSolution] = {}
-        for request in requests:
-            if request.agent not in self._connections:
-                if self._here is None:
-                    raise ValueError(f"no worker for agent {request.agent}")
-                results[request.agent] = solve_request(self._here, request)
-        for request, ok in zip(remote, sent, strict=True):
-            connection = self._connections[request.agent]
-            try:
-                answer = self._receive(connection) if ok else None
-                if answer is not None:
-                    results[request.agent] = answer
-                    continue
-                reason = "worker did not answer in time" if ok else "worker is gone"
-            except (EOFError, OSError):
-                reason = "worker died"
-            results[request.agent] = failed_solution(request, reason)
-        return [results[request.agent] for request in requests]
+                raise RuntimeError(f"ADMM worker {index} did not start")
 
     @property
     def solves_here(self) -> tuple[int, ...]:
         """Agents whose solves run in the calling process (their CPU time is the caller's)."""
-        return () if self._here is None else (0,)
+        if self._here is None:
+            return ()
+        return tuple(agent for agent, index in self._process_of.items() if index == 0)
 
-    def _receive(self, connection: Connection) -> NlpSolution | None:
-        """This round's answer; late answers of earlier (timed-out) rounds are discarded."""
+    def worker_of(self, agent: int) -> BaseProcess | None:
+        """The worker process that solves ``agent`` (None: the calling process does)."""
+        return self._processes.get(self._process_of[agent])
+
+    def solve_all(self, requests: list[LocalSolveRequest]) -> list[NlpSolution]:
+        self._sequence += 1
+        batches: dict[int, list[LocalSolveRequest]] = {}
+        for request in requests:
+            batches.setdefault(self._process_of[request.agent], []).append(request)
+        sent: dict[int, bool] = {}
+        for index, batch in batches.items():
+            if index in self._connections:
+                try:
+                    self._connections[index].send((self._sequence, batch))
+                    sent[index] = True
+                except (BrokenPipeError, OSError):
+                    sent[index] = False
+        results: dict[int, NlpSolution] = {}
+        for index, batch in batches.items():
+            if index not in self._connections:
+                if index != 0 or self._here is None:  # its worker is gone (closed)
+                    sent[index] = False
+                    continue
+                for request in batch:
+                    results[request.agent] = solve_request(self._here, request)
+        for index, ok in sent.items():
+            reason = "worker is gone"
+            if ok:
+                try:
+                    answer = self._receive(self._connections[index])
+                    if answer is not None:
+                        results.update(zip((r.agent for r in batches[index]), answer,
+                                           strict=True))
+                        continue
+                    reason = "worker did not answer in time"
+                except (EOFError, OSError):
+                    reason = "worker died"
+            for request in batches[index]:
+                results[request.agent] = failed_solution(request, reason)
+        return [results[request.agent] for request in requests]
+
+    def _receive(self, connection: Connection) -> list[NlpSolution] | None:
+        """This round's answers; late answers of earlier (timed-out) rounds are discarded."""
         while connection.poll(self.timeout_s):
-            sequence, solution = connection.recv()
+            sequence, solutions = connection.recv()
             if sequence == self._sequence:
-                return solution
+                return solutions
         return None
 
     def close(self) -> None:
@@ -113,7 +144,7 @@ class ProcessExecutor:
         self._connections, self._processes = {}, {}
 
     def __del__(self) -> None:
-        if self._processes:
+        if getattr(self, "_processes", None):  # (None: __init__ refused its arguments)
             self.close()
 
 

@@ -34,6 +34,7 @@ BLASFEO_VERSION = "0.1.4.2"
 SONAME = "libblasfeo.so.0"
 SOURCE_DIRECTORY = Path(__file__).resolve().parents[1] / "native" / "blasfeo"
 GENERIC = "GENERIC"
+LOADED_FIRST = "another BLASFEO was loaded first"
 _LOG = logging.getLogger(__name__)
 _STDERR_TAIL = 2000
 
@@ -49,6 +50,12 @@ class BlasKernels:
     @property
     def optimized(self) -> bool:
         return self.library is not None
+
+    @property
+    def preempted(self) -> bool:
+        """Generic only because CasADi's BLASFEO was loaded into this process before porter's
+        build: a fresh process would get the optimized one."""
+        return self.reason.startswith(LOADED_FIRST)
 
 
 def cpu_target(machine: str, cpu_flags: set[str]) -> str | None:
@@ -140,7 +147,7 @@ def load_blas_kernels(directory: Path, target: str = "auto", compiler: str = "gc
     library = library_path(directory, chosen, compiler)
     present = loaded_blasfeo()
     if present is not None and present.resolve() != library.resolve():
-        return BlasKernels(GENERIC, None, f"another BLASFEO was loaded first ({present})")
+        return BlasKernels(GENERIC, None, f"{LOADED_FIRST} ({present})")
     try:
         library = build_blasfeo(directory, chosen, compiler)
         ctypes.CDLL(str(library), mode=os.RTLD_NOW | os.RTLD_GLOBAL)

@@ -2,12 +2,20 @@
 
 from __future__ import annotations
 
+import subprocess
+import sys
+import textwrap
+from pathlib import Path
+
 import numpy as np
+import pytest
 
 from core.nmpc.admm_executor import LocalSolverSpec
 from core.nmpc.admm_mpc import DistributedMpc
 from deploy.nmpc_runtime.process_executor import ProcessExecutor
 from tests.core.controller_fixtures import inputs_at_start, settings, team
+
+ROOT = Path(__file__).resolve().parents[3]
 
 
 def test_process_and_serial_executors_agree() -> None:
@@ -29,10 +37,13 @@ def test_process_and_serial_executors_agree() -> None:
 def test_dead_worker_gives_a_failed_plan_not_a_crash() -> None:
     mpc = settings()
     model = team()
-    executor = ProcessExecutor(LocalSolverSpec(mpc, model.agent_count), timeout_s=5.0)
+    executor = ProcessExecutor(LocalSolverSpec(mpc, model.agent_count), timeout_s=5.0,
+                               processes=2)
     try:
-        executor._processes[1].kill()
-        executor._processes[1].join()
+        worker = executor.worker_of(1)
+        assert worker is not None and worker is not executor.worker_of(0)
+        worker.kill()
+        worker.join()
         plan = DistributedMpc(model, mpc, executor=executor).update(inputs_at_start(model, mpc))
     finally:
         executor.close()
@@ -49,16 +60,18 @@ def test_first_agent_solved_here_agrees_and_a_dead_worker_still_fails_cleanly() 
     inputs = inputs_at_start(model, mpc)
     serial = DistributedMpc(model, mpc).update(inputs)
     executor = ProcessExecutor(LocalSolverSpec(mpc, model.agent_count), timeout_s=5.0,
-                               solve_first_here=True)
+                               solve_first_here=True, processes=model.agent_count)
     try:
-        assert sorted(executor._processes) == list(range(1, model.agent_count))
-        assert executor.solves_here == (0,)
+        assert executor.worker_of(0) is None and executor.solves_here == (0,)
+        assert all(executor.worker_of(a) is not None for a in range(1, model.agent_count))
         controller = DistributedMpc(model, mpc, executor=executor)
         here = controller.update(inputs)
         assert here.success
         np.testing.assert_allclose(here.grf, serial.grf, atol=1e-6)
-        executor._processes[1].kill()
-        executor._processes[1].join()
+        worker = executor.worker_of(1)
+        assert worker is not None
+        worker.kill()
+        worker.join()
         controller.reset()
         plan = controller.update(inputs)
     finally:
@@ -66,3 +79,58 @@ def test_first_agent_solved_here_agrees_and_a_dead_worker_still_fails_cleanly() 
     assert not plan.success
     assert [s.success for s in plan.solves[: model.agent_count]][0]  # agent 0's own solve
     assert any("executor" in s.status for s in plan.solves)
+
+
+def test_agents_shared_over_fewer_processes_than_agents_agree_with_serial() -> None:
+    """Three agents over two processes (this one and a worker): agents 0 and 2 solved here,
+    agent 1 in the worker; the ADMM result is the serial one."""
+    mpc = settings()
+    model = team(("go2", "go2", "go2"))
+    inputs = inputs_at_start(model, mpc)
+    serial = DistributedMpc(model, mpc).update(inputs)
+    executor = ProcessExecutor(LocalSolverSpec(mpc, model.agent_count), solve_first_here=True,
+                               processes=2)
+    try:
+        assert executor.solves_here == (0, 2) and len(executor._processes) == 1
+        shared = DistributedMpc(model, mpc, executor=executor).update(inputs)
+    finally:
+        executor.close()
+    assert shared.success
+    np.testing.assert_allclose(shared.grf, serial.grf, atol=1e-6)
+    with pytest.raises(ValueError, match="processes"):
+        ProcessExecutor(LocalSolverSpec(mpc, model.agent_count), processes=0)
+
+
+def test_no_solve_here_in_a_process_that_loaded_casadis_blasfeo_first() -> None:
+    """A process whose solvers got CasADi's generic BLASFEO (a fatrop plugin loaded before
+    porter's build) does not take the first agent's solve: a fresh worker would solve it with
+    other kernels (2x slower, other rounding)."""
+    code = textwrap.dedent("""
+        import platform
+        import casadi as ca
+        from core.nmpc.admm_executor import LocalSolverSpec
+        from deploy.nmpc_runtime.process_executor import ProcessExecutor
+        from deploy.runtime.blas_kernels import cpu_target, host_cpu_flags
+        from deploy.runtime.codegen_cache import CompiledCodeCache
+        from tests.core.controller_fixtures import settings
+        x = ca.SX.sym("x")
+        ca.nlpsol("s", "fatrop", {"x": x, "f": x * x})  # maps CasADi's libblasfeo
+        cache = CompiledCodeCache()
+        kernels = cache.blas_kernels()
+        assert kernels.preempted == (cpu_target(platform.machine(), host_cpu_flags())
+                                     is not None), kernels
+        executor = ProcessExecutor(LocalSolverSpec(settings(), 2, cache),
+                                   solve_first_here=True, processes=2)
+        try:
+            print(kernels.preempted, executor.solves_here, executor.worker_of(0) is not None)
+        finally:
+            executor.close()
+    """)
+    result = subprocess.run([sys.executable, "-c", code], cwd=ROOT, capture_output=True,
+                            text=True, timeout=300)
+    assert result.returncode == 0, result.stderr[-2000:]
+    preempted, here, worker = result.stdout.split(maxsplit=2)
+    if preempted == "True":
+        assert here == "()" and worker.strip() == "True"
+    else:
+        assert here == "(0,)" and worker.strip() == "False"
