@@ -222,7 +222,11 @@ class Go2Driver(UnitreeLowLevelDriver):
             self.participant, topic_name(self.topic_prefix, f"{service}/response"), Response_),
             qos=REQUEST_QOS)
         deadline_s = time.monotonic() + timeout_s
-        while writer.get_publication_matched_status().current_count == 0:
+        # Both directions matched before asking: the response topic is volatile, so an answer
+        # published before our reader matched the service's writer would be lost (seen on a
+        # loaded machine: the request matched, the answer never arrived).
+        while (writer.get_publication_matched_status().current_count == 0
+               or reader.get_subscription_matched_status().current_count == 0):
             if time.monotonic() > deadline_s:
                 raise DriverError(f"{self._name}: no motion-switcher service on "
                                   f"{writer.topic.name} within {timeout_s} s")
