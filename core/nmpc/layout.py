@@ -71,17 +71,21 @@ class DecisionRows:
 
     @staticmethod
     def of(decision: BlockLayout, horizon_steps: int, robot_keys: list[str],
-           slack_block: str = "barrier_slack") -> DecisionRows:
+           slack_block: str) -> DecisionRows:
         def starts(block: str, stages: int) -> np.ndarray:
             return np.array([decision.offsets[f"{block}@{k}"][0] for k in range(stages)])
 
+        def rows(block: str) -> np.ndarray:  # every row of the block
+            return np.arange(*decision.slice(block).indices(decision.size))
+
         n = horizon_steps
-        slack = ([np.arange(*decision.slice(f"{slack_block}@{k}").indices(decision.size))
-                  for k in range(n)] if f"{slack_block}@0" in decision.offsets else [])
+        slack = ([rows(f"{slack_block}@{k}") for k in range(n)]
+                 if f"{slack_block}@0" in decision.offsets else [])
         return DecisionRows(
             robot_state={key: starts(f"robot_{key}", n + 1) for key in robot_keys},
             payload_state=starts("payload", n + 1),
-            grf_z={key: starts(f"grf_{key}", n)[:, None] + np.arange(2, 12, 3)
+            # (x, y, z) per foot: every third row from the third
+            grf_z={key: np.array([rows(f"grf_{key}@{k}")[2::3] for k in range(n)])
                    for key in robot_keys},
             slack=np.concatenate(slack) if slack else np.zeros(0, dtype=int),
         )
