@@ -28,7 +28,7 @@ from __future__ import annotations
 
 import numpy as np
 
-from core.model.rotations import euler_from_rotation, rotation_from_euler
+from core.model.rotations import cross_rows, euler_from_rotation, rotation_from_euler
 from core.model.srb_model import STATE_SIZE
 from core.model.team import TeamModel
 
@@ -80,7 +80,7 @@ class PayloadEstimator:
         rotations = np.array([rotation_from_euler(x[6:9]) for x in states])
         arms = np.einsum("ijk,ik->ij", rotations, self._in_robot)  # R_i r_i
         points = states[:, 0:3] + arms
-        point_velocities = states[:, 3:6] + np.cross(states[:, 9:12], arms)
+        point_velocities = states[:, 3:6] + cross_rows(states[:, 9:12], arms)
 
         n = rotations[:, :, 2].mean(axis=0)
         norm = np.linalg.norm(n)
@@ -103,11 +103,11 @@ class PayloadEstimator:
         position = (points - offsets).mean(axis=0)
 
         omega_perp = (states[:, 9:12] - np.outer(states[:, 9:12] @ n, n)).mean(axis=0)
-        residual = point_velocities - np.cross(omega_perp, offsets)
-        spin = np.cross(n, offsets - offsets.mean(axis=0))  # n x (d_i - mean d)
+        residual = point_velocities - cross_rows(omega_perp, offsets)
+        spin = cross_rows(n, offsets - offsets.mean(axis=0))  # n x (d_i - mean d)
         centred = residual - residual.mean(axis=0)
         spin_rate = np.sum(spin * centred) / np.sum(spin * spin)
         omega = omega_perp + spin_rate * n
-        velocity = (point_velocities - np.cross(omega, offsets)).mean(axis=0)
+        velocity = (point_velocities - cross_rows(omega, offsets)).mean(axis=0)
 
         return np.concatenate([position, velocity, euler, omega])

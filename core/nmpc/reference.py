@@ -4,10 +4,11 @@ reference keeps its coupling point on the payload's coupling point with the payl
 from __future__ import annotations
 
 from dataclasses import dataclass
+from functools import cached_property
 
 import numpy as np
 
-from core.model.rotations import yaw_rotation
+from core.model.rotations import cross3, yaw_rotation
 from core.model.srb_model import STATE_SIZE
 from core.model.team import TeamModel
 
@@ -22,10 +23,16 @@ class WaypointReference:
     height_m: float
     yaw_rad: float = 0.0
 
-    def payload_state(self, time_s: float) -> np.ndarray:
+    @cached_property
+    def _segments(self) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+        """(points, segments, lengths) of the path, computed once (the NMPC asks for the
+        reference at every stage of every decision)."""
         points = np.asarray(self.waypoints_m, dtype=float)
         segments = np.diff(points, axis=0)
-        lengths = np.linalg.norm(segments, axis=1)
+        return points, segments, np.linalg.norm(segments, axis=1)
+
+    def payload_state(self, time_s: float) -> np.ndarray:
+        points, segments, lengths = self._segments
         distance = self.speed_m_s * max(time_s, 0.0)
         state = np.zeros(STATE_SIZE)
         state[2] = self.height_m
@@ -86,10 +93,10 @@ def robot_state_from_payload(team: TeamModel, agent: int, payload_state: np.ndar
     state = np.zeros(STATE_SIZE)
     point = payload_state[0:3] + rotation @ team.coupling_points_in_payload_m[agent]
     state[0:3] = point - rotation @ team.coupling_points_in_robot_m[agent]
-    point_velocity = payload_state[3:6] + np.cross(payload_state[9:12],
-                                                   point - payload_state[0:3])
+    point_velocity = payload_state[3:6] + cross3(payload_state[9:12],
+                                                 point - payload_state[0:3])
     omega = np.array([0.0, 0.0, payload_state[11]])  # level trunk turning with the payload
-    state[3:6] = point_velocity - np.cross(omega, rotation @ team.coupling_points_in_robot_m[agent])
+    state[3:6] = point_velocity - cross3(omega, rotation @ team.coupling_points_in_robot_m[agent])
     state[8] = yaw
     state[11] = payload_state[11]
     return state

@@ -76,7 +76,8 @@ def deploy_row(summary: dict[str, Any]) -> dict[str, Any]:
             "wbc_overruns": summary["wbc_overruns"],
             "progress_toward_goal_m": summary["payload"]["progress_toward_goal_m"],
             "cpu_per_running_s": summary.get("cpu_per_running_s", {}),
-            "tick_stages_wall": summary.get("tick_stages_wall", {})}
+            "tick_stages_wall": summary.get("tick_stages_wall", {}),
+            "gc_pauses": summary.get("gc_pauses", {})}
 
 
 def run_bench(config: str, time_scales: list[float], runs: int,
@@ -121,6 +122,15 @@ def format_table(rows: list[dict[str, Any]]) -> str:
 STAGES = ("read", "estimate", "nmpc", "check", "control", "filter", "send", "record", "total")
 
 
+def _gc_cell(row: dict[str, Any]) -> str:
+    pauses = row.get("gc_pauses") or {}
+    if not pauses:
+        return "-"
+    counts = "/".join(str(pauses.get(f"gen{g}", {}).get("collections", 0)) for g in range(3))
+    longest = max(float(p.get("max_ms", 0.0)) for p in pauses.values())
+    return f"{counts} {longest:.2f}"
+
+
 def format_budget(rows: list[dict[str, Any]]) -> str:
     """CPU-s per simulated second by process, and the tick's stages [ms wall, p50 / p99]."""
     cpu_cells = []
@@ -131,12 +141,13 @@ def format_budget(rows: list[dict[str, Any]]) -> str:
         cpu_cells.append([row["config"], f"{row['time_scale']:.2f}", _number(cpu.get("porter"), 2),
                           _number(nmpc, 2), _number(workers if cpu else None, 2),
                           _number(cpu.get("porter-sim-world"), 2),
-                          _number(sum(cpu.values()) if cpu else None, 2)])
+                          _number(sum(cpu.values()) if cpu else None, 2), _gc_cell(row)])
     cpu_table = render_table(
         ["config", *(Column(name, "right") for name in (
-            "scale", "porter", "nmpc", "workers", "world", "total"))], cpu_cells,
+            "scale", "porter", "nmpc", "workers", "world", "total", "loop gc"))], cpu_cells,
         ["CPU-s per simulated s over RUNNING (porter: the loop's process; nmpc: its process; "
-         "workers: the ADMM workers, summed)"])
+         "workers: the ADMM workers, summed); loop gc: the loop's collections over the whole "
+         "run, gen0/gen1/gen2 count, and the longest pause [ms wall]"])
     stage_cells = []
     for row in rows:
         stages = row.get("tick_stages_wall") or {}

@@ -30,6 +30,7 @@ from deploy.config.scenario import Scenario
 from deploy.nmpc_runtime.nmpc_thread import NmpcResult
 from deploy.runtime.codegen_cache import CompiledCodeCache
 from deploy.runtime.controller import NmpcDecision, build_team_mpc
+from deploy.runtime.gc_pauses import freeze_startup_objects
 from deploy.runtime.process_names import name_this_process
 
 __all__ = ["NmpcProcess", "NmpcProcessError"]
@@ -46,6 +47,7 @@ def _serve(scenario: Scenario, settings: MpcSettings, cache: CompiledCodeCache,
     signal.signal(signal.SIGINT, signal.SIG_IGN)
     name_this_process("porter-nmpc")
     controller = build_team_mpc(scenario, settings, cache)
+    freeze_startup_objects()  # no full collection of the NMPC's objects during updates
     connection.send("ready")
     try:
         while True:

@@ -29,12 +29,14 @@ import numpy as np
 
 from core.nmpc.admm_executor import LocalSolveRequest, LocalSolverSpec, solve_request
 from core.nmpc.nlp_solver import NlpSolution, NlpSolver, SolveStats
+from deploy.runtime.gc_pauses import freeze_startup_objects
 from deploy.runtime.process_names import name_this_process
 
 
 def _worker(spec: LocalSolverSpec, index: int, connection: Connection) -> None:
     name_this_process(f"porter-admm{index}")
     solver = spec.build()
+    freeze_startup_objects()  # no full collection of the solver's objects between solves
     connection.send("ready")
     while True:
         message = connection.recv()

@@ -16,6 +16,7 @@ targets, the QP's torques sent as ``tau + kd (dq + qdd dt - dq)`` with a small d
 
 from __future__ import annotations
 
+import statistics
 from dataclasses import dataclass, field
 
 import numpy as np
@@ -319,7 +320,9 @@ class TeamController:
         if setting != "measured":
             return float(setting)
         recent = recent_delays_s[-10:]
-        return float(np.median(recent)) if recent else 0.0
+        # statistics, not NumPy: np.median's first call imports numpy.ma (10-45 ms), which on
+        # the loop's first measured delay stalled a tick past the watchdog's timeout
+        return float(statistics.median(recent)) if recent else 0.0
 
     def update(self, decision: NmpcDecision) -> MpcPlan:
         """Run the NMPC on ``decision``'s inputs (the slow part: may run in another thread)."""

@@ -45,6 +45,7 @@ from deploy.nmpc_runtime.nmpc_schedule import NmpcSchedule
 from deploy.recording.loop_recording import LoopRecording
 from deploy.runtime.clock import LoopClock
 from deploy.runtime.controller import TeamController, WbcStep
+from deploy.runtime.gc_pauses import GcPauses
 from deploy.runtime.links import TeamLinks
 from deploy.runtime.loop_interfaces import Heartbeat, LoopHooks, LoopSettings
 from deploy.runtime.timing import PeriodStats, TickStages
@@ -90,6 +91,7 @@ class ControlLoop:
                                            self._on_transition)
         self.wbc_stats = PeriodStats(1.0 / settings.rates.wbc_hz)
         self.stages = TickStages()  # wall time per stage of the RUNNING ticks
+        self.gc_pauses = GcPauses()  # start-up frozen out of the collector while the loop runs
         self.required_bodies = [*self.names, PAYLOAD_NAME]
         self.t0 = clock.now()
         self.since: dict[SafetyState, float] = {S.PREFLIGHT: 0.0}
@@ -145,6 +147,7 @@ class ControlLoop:
         if self.recording is not None:
             self.recording.start(self.now(), start_text)
         self.since[S.PREFLIGHT] = self.now()  # the pre-flight timeout counts from here
+        self.gc_pauses.start()
         self.clock.start()
         try:
             while not self._tick():
@@ -160,6 +163,7 @@ class ControlLoop:
             if self.watchdog is not None:
                 self.watchdog_tripped = self.watchdog.tripped
                 self.watchdog.disarm()
+            self.gc_pauses.stop()
             self.nmpc.close()
 
     def _tick(self) -> bool:

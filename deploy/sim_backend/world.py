@@ -46,6 +46,7 @@ import numpy as np
 from core.model.conventions import JOINT_COUNT, PAYLOAD_NAME
 from deploy.config.deploy_config import PORTER_FAULTS, DeployConfig, Go2Link
 from deploy.config.scenario import Scenario
+from deploy.runtime.gc_pauses import freeze_startup_objects
 from deploy.runtime.process_names import name_this_process
 from deploy.safety.checks import tilt_rad
 from deploy.safety.posture import sitting_posture
@@ -361,6 +362,7 @@ def serve(spec: WorldSpec, control: Connection, can_link: Connection) -> None:
     except Exception as error:  # reported to the parent, which raises it
         control.send(("error", f"{type(error).__name__}: {error}"))
         return
+    freeze_startup_objects()  # no full collection of the scene's objects while it runs
     try:
         control.send(("ready", world.endpoints()))
         world.run(control)

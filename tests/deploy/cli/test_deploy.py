@@ -19,7 +19,7 @@ import yaml
 
 from core.estimation.base_velocity import BaseVelocityEstimator
 from core.model.conventions import LEG_NAMES
-from deploy.bench.deploy_runs import deploy_row, format_table, scaled_config
+from deploy.bench.deploy_runs import deploy_row, format_budget, format_table, scaled_config
 from deploy.cli.porter import main
 from deploy.config.deploy_config import CONFIG_DIR, load_deploy_config
 from deploy.config.files import ConfigError
@@ -108,6 +108,12 @@ def test_deploy_on_the_sim_backend_stands_walks_carries_and_sits_down(
     assert row["wbc_rate_ratio"] == pytest.approx(summary["wbc_loop"]["rate_hz"] / 500.0)
     assert row["nmpc_rate_ratio"] == pytest.approx(summary["nmpc_loop"]["rate_hz"] / 60.0)
     assert "completed" in format_table([row])
+    # the loop's collections: counted by generation (start-up frozen out of them), in the budget
+    assert set(summary["gc_pauses"]) == {"gen0", "gen1", "gen2"}
+    assert summary["gc_pauses"]["gen0"]["collections"] > 0
+    gen = summary["gc_pauses"]
+    cell = "/".join(str(gen[f"gen{g}"]["collections"]) for g in range(3))
+    assert "loop gc" in format_budget([row]) and f" {cell} " in format_budget([row])
 
 
 @pytest.mark.slow

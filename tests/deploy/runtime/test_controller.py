@@ -3,6 +3,9 @@ decision while settling and walking, delay compensation's rule, and the WBC tick
 
 from __future__ import annotations
 
+import subprocess
+import sys
+
 import numpy as np
 import pytest
 
@@ -57,6 +60,22 @@ def test_compensation_is_the_median_of_the_last_ten_delays(run: SimRun) -> None:
     control = run.control
     assert control.compensation_s([]) == 0.0
     assert control.compensation_s([1.0] * 5 + [0.02, 0.03, 0.04] * 4) == pytest.approx(0.03)
+
+
+def test_the_measured_delay_imports_nothing_on_the_loops_first_use() -> None:
+    """The first measured delay came with np.median's import of numpy.ma (10-45 ms in one
+    tick: past the watchdog's timeout). In a fresh interpreter no module loads on first use."""
+    script = (
+        "import sys, types\n"
+        "from deploy.runtime.controller import TeamController\n"
+        "before = set(sys.modules)\n"
+        "setting = types.SimpleNamespace(delay_compensation_s='measured')\n"
+        "me = types.SimpleNamespace(scenario=types.SimpleNamespace(controller=setting))\n"
+        "assert TeamController.compensation_s(me, [0.01, 0.03, 0.02, 0.05]) == 0.025\n"
+        "print(sorted(set(sys.modules) - before))\n")
+    result = subprocess.run([sys.executable, "-c", script], capture_output=True, text=True,
+                            timeout=120, check=True)
+    assert result.stdout.strip() == "[]", result.stdout
 
 
 def test_one_update_and_wbc_ticks_give_commands_within_the_limits(run: SimRun) -> None:

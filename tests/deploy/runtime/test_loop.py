@@ -4,6 +4,7 @@ injected clock whose sleep steps the simulation)."""
 
 from __future__ import annotations
 
+import gc
 from dataclasses import replace
 
 import numpy as np
@@ -129,6 +130,9 @@ def test_paced_clock_runs_the_deploy_sequence_on_the_simulation() -> None:
     assert steps == ["PREFLIGHT -> STANDING_UP", "STANDING_UP -> ARMED", "ARMED -> RUNNING",
                      "RUNNING -> SITTING_DOWN", "SITTING_DOWN -> DONE"], outcome["transitions"]
     assert outcome["safe_stop"] is None and outcome["result"] == "ran 0.2 s"
+    # the collector ran during the loop with start-up frozen, and was handed back after it
+    assert set(loop.gc_pauses.summary()) == {"gen0", "gen1", "gen2"}
+    assert gc.get_freeze_count() == 0
     # plans every other 60 Hz instant (20 ms each), each planned 20-22 ms ahead
     assert 5 <= outcome["nmpc_updates"] <= 8 and outcome["nmpc_deadline_misses"] >= 5
     # (the tick a transition happens in still sends the old state's command)
