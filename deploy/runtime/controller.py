@@ -320,7 +320,7 @@ class TeamController:
         if setting != "measured":
             return float(setting)
         recent = recent_delays_s[-10:]
-        # statistics, not NumPy: np.median's first call imports numpy.ma (10-45 ms), which on
+        # statistics, not NumPy: np.median's first call imports numpy.ma (~20 ms), which on
         # the loop's first measured delay stalled a tick past the watchdog's timeout
         return float(statistics.median(recent)) if recent else 0.0
 

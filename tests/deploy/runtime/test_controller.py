@@ -63,7 +63,7 @@ def test_compensation_is_the_median_of_the_last_ten_delays(run: SimRun) -> None:
 
 
 def test_the_measured_delay_imports_nothing_on_the_loops_first_use() -> None:
-    """The first measured delay came with np.median's import of numpy.ma (10-45 ms in one
+    """The first measured delay came with np.median's import of numpy.ma (~20 ms in one
     tick: past the watchdog's timeout). In a fresh interpreter no module loads on first use."""
     script = (
         "import sys, types\n"
