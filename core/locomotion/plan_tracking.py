@@ -74,12 +74,13 @@ class LegCoordinator:
         position = self.planner.feet_in_world_m.copy()
         velocity = np.zeros((4, 3))
         acceleration = np.zeros((4, 3))
-        for leg in np.flatnonzero(self.stance == 0.0):
-            point = swing_point(self.liftoff_m[leg], targets[leg], float(progress[leg]),
+        swing = self.stance == 0.0
+        if swing.any():  # all swing legs in one evaluation
+            point = swing_point(self.liftoff_m[swing], targets[swing], progress[swing],
                                 self.gait.swing_duration_s, self.swing_height_m)
-            position[leg] = point.position_m
-            velocity[leg] = point.velocity_m_s
-            acceleration[leg] = point.acceleration_m_s2
+            position[swing] = point.position_m
+            velocity[swing] = point.velocity_m_s
+            acceleration[swing] = point.acceleration_m_s2
         return position, velocity, acceleration
 
 

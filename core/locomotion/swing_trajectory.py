@@ -18,18 +18,19 @@ from dataclasses import dataclass
 
 import numpy as np
 
-
-def _min_jerk(s: float) -> tuple[float, float, float]:
-    """m(s), dm/ds, d2m/ds2."""
-    return (10 * s**3 - 15 * s**4 + 6 * s**5, 30 * s**2 - 60 * s**3 + 30 * s**4,
-            60 * s - 180 * s**2 + 120 * s**3)
-
-
-def _bump(s: float) -> tuple[float, float, float]:
-    """b(s) = 64 s^3 (1 - s)^3 and its first two derivatives in s."""
-    u = 1.0 - s
-    return (64 * s**3 * u**3, 192 * s**2 * u**2 * (u - s),
-            384 * s * u * (u * u - 3 * s * u + s * s))
+# Coefficients of s^0 .. s^6 (rows) of m, dm/ds, d2m/ds2, b, db/ds, d2b/ds2 (columns), with
+# b(s) = 64 (s^3 - 3 s^4 + 3 s^5 - s^6): all six for all legs in one product with the powers.
+_POLYNOMIALS = np.array([
+    #  m      dm     ddm      b      db      ddb
+    [0.0,    0.0,    0.0,    0.0,    0.0,     0.0],
+    [0.0,    0.0,   60.0,    0.0,    0.0,   384.0],
+    [0.0,   30.0, -180.0,    0.0,  192.0, -2304.0],
+    [10.0, -60.0,  120.0,   64.0, -768.0,  3840.0],
+    [-15.0, 30.0,    0.0, -192.0,  960.0, -1920.0],
+    [6.0,    0.0,    0.0,  192.0, -384.0,     0.0],
+    [0.0,    0.0,    0.0,  -64.0,    0.0,     0.0],
+])
+_POWERS = np.arange(7)
 
 
 @dataclass(frozen=True)
@@ -41,18 +42,20 @@ class SwingPoint:
     acceleration_m_s2: np.ndarray
 
 
-def swing_point(liftoff_m: np.ndarray, touchdown_m: np.ndarray, progress: float,
+def swing_point(liftoff_m: np.ndarray, touchdown_m: np.ndarray, progress: float | np.ndarray,
                 duration_s: float, height_m: float) -> SwingPoint:
-    """Foot set-point at ``progress`` in [0, 1] of a swing of ``duration_s`` [s]."""
+    """Foot set-point at ``progress`` in [0, 1] of a swing of ``duration_s`` [s]; ``progress``
+    (n,) with lift-off and touchdown points (n, 3) gives n legs' set-points at once."""
     if duration_s <= 0:
         raise ValueError(f"swing duration must be positive, got {duration_s}")
-    s = float(np.clip(progress, 0.0, 1.0))
-    m, dm, ddm = _min_jerk(s)
-    b, db, ddb = _bump(s)
+    s = np.minimum(np.maximum(progress, 0.0), 1.0)
+    # (..., 6): m, dm, ddm, b, db, ddb with the derivatives in time (1/T, 1/T^2 per order)
+    scale = np.array([1.0, 1.0 / duration_s, duration_s**-2.0] * 2)
+    values = (np.power.outer(s, _POWERS) @ _POLYNOMIALS) * scale
     start = np.asarray(liftoff_m, dtype=float)
     delta = np.asarray(touchdown_m, dtype=float) - start
-    up = np.array([0.0, 0.0, height_m])
-    position = start + delta * m + up * b
-    velocity = (delta * dm + up * db) / duration_s
-    acceleration = (delta * ddm + up * ddb) / duration_s**2
-    return SwingPoint(position, velocity, acceleration)
+    # (..., 3 orders, 3 axes): delta times m's three, plus the lift (z only) times b's three
+    motion = values[..., 0:3, None] * delta[..., None, :]
+    motion[..., 2] += height_m * values[..., 3:6]
+    motion[..., 0, :] += start
+    return SwingPoint(motion[..., 0, :], motion[..., 1, :], motion[..., 2, :])

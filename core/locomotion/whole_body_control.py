@@ -24,22 +24,24 @@ from __future__ import annotations
 
 import time
 from dataclasses import dataclass
+from typing import TYPE_CHECKING
 
 import daqp
 import numpy as np
 import pinocchio as pin
 
 from core.locomotion.settings import WbcSettings
+from core.locomotion.wbc_qp import FORCES, TORQUE_ROWS, WbcQpAssembly
 from core.model.conventions import JOINT_COUNT, LEG_NAMES
 from core.model.rotations import (
     cross3,
     euler_from_rotation,
-    rotation_from_euler,
     rotation_from_quaternion_wxyz,
 )
 
-_INF = 1e30
-_EQUALITY = 5  # DAQP constraint sense: equality
+if TYPE_CHECKING:  # a protocol only; the NMPC package need not load
+    from core.nmpc.nlp_solver import NlpCompiler
+
 
 
 @dataclass(frozen=True)
@@ -101,19 +103,6 @@ class WbcOutput:
     solve_time_s: float
 
 
-@dataclass(frozen=True)
-class _QpLayout:
-    """The parts of the QP that depend only on the number of stance feet: the constant
-    Hessian (regularization, base and force task weights), the constraint matrix with its
-    friction rows filled, the constant bounds and the constraint senses. Copied per tick."""
-
-    hessian: np.ndarray
-    constraint: np.ndarray
-    upper: np.ndarray
-    lower: np.ndarray
-    sense: np.ndarray
-
-
 class WholeBodyController:
     """WBC of one robot, built once per robot from its Pinocchio model.
 
@@ -124,7 +113,8 @@ class WholeBodyController:
 
     def __init__(self, model: pin.Model, standing_configuration: np.ndarray,
                  coupling_point_in_robot_m: np.ndarray, foot_radius_m: float,
-                 settings: WbcSettings | None = None) -> None:
+                 settings: WbcSettings | None = None, compiler: NlpCompiler | None = None
+                 ) -> None:
         self.model = model
         self.data = model.createData()
         self.settings = settings or WbcSettings()
@@ -135,14 +125,11 @@ class WholeBodyController:
         self.foot_radius_m = foot_radius_m
         self.foot_frame_ids = [model.getFrameId(f"{leg}_foot") for leg in LEG_NAMES]
         self.torque_limit_nm = np.array(model.effortLimit[6:], dtype=float)
-        s = self.settings
-        self._kp_base = np.array(s.base_position_gain)
-        self._kd_base = np.array(s.base_velocity_gain)
-        self._kp_rot = np.array(s.base_orientation_gain)
-        self._kd_rot = np.array(s.base_angular_velocity_gain)
         self._last: WbcOutput | None = None
-        self._lower = np.tril_indices(model.nv, -1)
-        self._layouts = [self._build_layout(stance_count) for stance_count in range(5)]
+        # the QP's arrays, assembled by one CasADi function (``wbc_qp``)
+        self._qp = WbcQpAssembly(self.settings, self.com_offset_in_base_m,
+                                 self.coupling_in_base_m, foot_radius_m, self.torque_limit_nm,
+                                 compiler)
         self._zero_acceleration = np.zeros(model.nv)
         # (state, q, v, rotation) whose rigid-body terms the Pinocchio data holds (``observe``)
         self._observed: tuple[FloatingBaseState, np.ndarray, np.ndarray, np.ndarray] | None = None
@@ -198,7 +185,6 @@ class WholeBodyController:
     def compute(self, state: FloatingBaseState, target: WbcTarget) -> WbcOutput:
         """One WBC tick: joint torques tracking ``target`` from the measured ``state``."""
         start = time.perf_counter()
-        s = self.settings
         model, data = self.model, self.data
         observed, self._observed = self._observed, None
         if observed is not None and observed[0] is state:
@@ -208,136 +194,55 @@ class WholeBodyController:
             q, v = self.pinocchio_state(state, rotation)
             pin.computeAllTerms(model, data, q, v)
             pin.updateFramePlacements(model, data)  # the swing feet's placements (oMf)
-        mass = np.array(data.M)  # Pinocchio fills the upper triangle; mirror it
-        mass[self._lower] = mass.T[self._lower]
-        bias = np.array(data.nle)
+        views = self._qp.views
+        views["mass"][:] = data.M  # upper triangle filled; the assembly mirrors it
+        bias = views["bias"]
+        bias[:] = data.nle
         pin.forwardKinematics(model, data, q, v, self._zero_acceleration)  # data.a = Jdot v
         world = pin.ReferenceFrame.LOCAL_WORLD_ALIGNED
-        jacobians = [pin.getFrameJacobian(model, data, i, world)[0:3] for i in self.foot_frame_ids]
-        drifts = [pin.getFrameClassicalAcceleration(model, data, i, world).linear
-                  for i in self.foot_frame_ids]
-        stance = np.flatnonzero(np.asarray(target.stance, dtype=bool))
-        swing = [leg for leg in range(4) if leg not in stance]
-        nf = 3 * len(stance)
-        n = nf + model.nv
-        layout = self._layouts[len(stance)]
-
-        # Cost 0.5 x'Hx + g'x as a sum of weighted least-squares terms; each task's rows are
-        # a block of x (base: qdd_base; swing: J qdd; forces: f), so only that block is added.
-        hessian = layout.hessian.copy()
-        gradient = np.zeros(n)
-        gradient[nf:nf + 6] -= s.base_weight * self._base_acceleration(state, target, rotation, v)
-        for leg in swing:
-            jacobian = jacobians[leg]
-            velocity = jacobian @ v
-            foot_now = data.oMf[self.foot_frame_ids[leg]].translation
-            desired = (target.foot_acceleration_m_s2[leg]
-                       + s.swing_position_gain * (target.foot_position_m[leg]
-                                                  + (0, 0, self.foot_radius_m) - foot_now)
-                       + s.swing_velocity_gain * (target.foot_velocity_m_s[leg] - velocity))
-            weighted = s.swing_weight * jacobian.T
-            hessian[nf:, nf:] += weighted @ jacobian
-            gradient[nf:] -= weighted @ (desired - drifts[leg])
-        if nf:
-            gradient[0:nf] -= s.force_weight * np.asarray(target.planned_grf_n)[stance].reshape(-1)
-
-        # Constraints (rows of ``layout``): simple bounds on f, then friction (constant),
-        # dynamics, stance, torque rows.
-        constraint, upper, lower = (layout.constraint.copy(), layout.upper.copy(),
-                                    layout.lower.copy())
-        contact_jacobian = (np.vstack([jacobians[leg] for leg in stance]) if nf
-                            else np.zeros((0, model.nv)))
-        row = 4 * len(stance)
-        dynamics = constraint[row:row + 6]
-        dynamics[:, 0:nf] = -contact_jacobian[:, 0:6].T
-        dynamics[:, nf:] = mass[0:6]
-        base_force = self._coupling_generalized_force(target.wrench_on_robot, rotation)
-        bound = nf + row
-        upper[bound:bound + 6] = lower[bound:bound + 6] = base_force - bias[0:6]
-        row, bound = row + 6, bound + 6
-        if nf:
-            constraint[row:row + nf, nf:] = contact_jacobian
-            stance_drift = np.concatenate([drifts[leg] for leg in stance])
-            rhs = -stance_drift - s.stance_velocity_damping * (contact_jacobian @ v)
-            upper[bound:bound + nf] = lower[bound:bound + nf] = rhs
-            row, bound = row + nf, bound + nf
-        torque_rows = constraint[row:]
-        torque_rows[:, 0:nf] = -contact_jacobian[:, 6:].T
-        torque_rows[:, nf:] = mass[6:]
-        upper[bound:] = self.torque_limit_nm - bias[6:]
-        lower[bound:] = -self.torque_limit_nm - bias[6:]
-        sense = layout.sense
-        x, _, status, _ = daqp.solve(hessian, gradient, constraint, upper, lower, sense)
+        jacobian, drift, frame = (views["contact_jacobian"], views["foot_drift"],
+                                  views["foot_frame"])
+        for leg, frame_id in enumerate(self.foot_frame_ids):
+            rows = slice(3 * leg, 3 * leg + 3)
+            jacobian[rows] = pin.getFrameJacobian(model, data, frame_id, world)[0:3]
+            drift[rows] = pin.getFrameClassicalAcceleration(model, data, frame_id, world).linear
+            frame[rows] = data.oMf[frame_id].translation
+        views["velocity"][:] = v
+        views["rotation"][:] = rotation
+        views["base_position"][:] = state.position_base_in_world_m
+        views["base_velocity"][:] = state.linear_velocity_in_world_m_s
+        views["angular_velocity_in_body"][:] = state.angular_velocity_in_body_rad_s
+        views["com_position"][:] = target.com_position_m
+        views["com_velocity"][:] = target.com_velocity_m_s
+        views["com_acceleration"][:] = target.com_acceleration_m_s2
+        views["euler"][:] = target.euler_rad
+        views["angular_velocity"][:] = target.angular_velocity_rad_s
+        views["angular_acceleration"][:] = target.angular_acceleration_rad_s2
+        stance = np.asarray(target.stance, dtype=bool)
+        views["stance"][:] = stance
+        views["planned_grf"][:] = np.reshape(target.planned_grf_n, -1)
+        views["foot_position"][:] = np.reshape(target.foot_position_m, -1)
+        views["foot_velocity"][:] = np.reshape(target.foot_velocity_m_s, -1)
+        views["foot_acceleration"][:] = np.reshape(target.foot_acceleration_m_s2, -1)
+        views["wrench_on_robot"][:] = target.wrench_on_robot
+        qp = self._qp.assemble()
+        x, _, status, _ = daqp.solve(qp.hessian, qp.gradient, qp.constraint, qp.upper,
+                                     qp.lower, self._qp.sense(stance))
         elapsed = time.perf_counter() - start
         if status < 1 or not np.all(np.isfinite(x)):
             return self._failed(int(status), elapsed)
-        forces = x[0:nf]
-        acceleration = x[nf:]
-        torque = mass[6:] @ acceleration + bias[6:] - contact_jacobian[:, 6:].T @ forces
-        contact_force = np.zeros((4, 3))
-        contact_force[stance] = forces.reshape(-1, 3)
-        output = WbcOutput(np.clip(torque, -self.torque_limit_nm, self.torque_limit_nm),
-                           acceleration[6:], contact_force, True, int(status),
+        torque = qp.constraint[TORQUE_ROWS] @ x + bias[6:]
+        # swing forces are pinned to zero; the product drops the solver's round-off there
+        contact_force = x[0:FORCES].reshape(4, 3) * stance[:, None]
+        np.minimum(torque, self.torque_limit_nm, out=torque)
+        np.maximum(torque, -self.torque_limit_nm, out=torque)
+        output = WbcOutput(torque, x[FORCES + 6:], contact_force, True, int(status),
                            time.perf_counter() - start)
         self._last = output
         return output
-
-    def _build_layout(self, stance_count: int) -> _QpLayout:
-        s = self.settings
-        nv = self.model.nv
-        nf = 3 * stance_count
-        n = nf + nv
-        hessian = s.regularization * np.eye(n)
-        hessian[range(nf, nf + 6), range(nf, nf + 6)] += s.base_weight
-        hessian[range(nf), range(nf)] += s.force_weight
-        friction_rows = 4 * stance_count
-        constraint = np.zeros((friction_rows + 6 + nf + JOINT_COUNT, n))
-        mu = s.friction_coefficient
-        pyramid = np.array([[1.0, 0.0, -mu], [-1.0, 0.0, -mu], [0.0, 1.0, -mu],
-                            [0.0, -1.0, -mu]])
-        for k in range(stance_count):
-            constraint[4 * k:4 * k + 4, 3 * k:3 * k + 3] = pyramid
-        bounds = nf + len(constraint)
-        upper, lower = np.zeros(bounds), np.zeros(bounds)
-        upper[0:nf] = np.tile([_INF, _INF, s.max_normal_force_n], stance_count)
-        lower[0:nf] = np.tile([-_INF, -_INF, s.min_normal_force_n], stance_count)
-        lower[nf:nf + friction_rows] = -_INF
-        sense = np.zeros(bounds, dtype=np.int32)
-        equalities = nf + friction_rows
-        sense[equalities:equalities + 6 + nf] = _EQUALITY  # dynamics, stance feet
-        return _QpLayout(hessian, constraint, upper, lower, sense)
 
     def _failed(self, status: int, elapsed_s: float) -> WbcOutput:
         last = self._last
         torque = last.torque_nm if last is not None else np.zeros(JOINT_COUNT)
         return WbcOutput(torque, np.zeros(JOINT_COUNT), np.zeros((4, 3)), False, status,
                          elapsed_s)
-
-    def _base_acceleration(self, state: FloatingBaseState, target: WbcTarget,
-                           rotation: np.ndarray, v: np.ndarray) -> np.ndarray:
-        """Desired free-flyer acceleration (base frame; Pinocchio's spatial convention) from PD
-        on the planned trunk plus the plan's accelerations."""
-        rotation_desired = rotation_from_euler(np.asarray(target.euler_rad))
-        offset_desired = rotation_desired @ self.com_offset_in_base_m
-        position_desired = np.asarray(target.com_position_m) - offset_desired
-        velocity_desired = (np.asarray(target.com_velocity_m_s)
-                            - cross3(target.angular_velocity_rad_s, offset_desired))
-        omega = rotation @ state.angular_velocity_in_body_rad_s
-        linear = (np.asarray(target.com_acceleration_m_s2)
-                  + self._kp_base * (position_desired - state.position_base_in_world_m)
-                  + self._kd_base * (velocity_desired - state.linear_velocity_in_world_m_s))
-        angular = (np.asarray(target.angular_acceleration_rad_s2)
-                   + self._kp_rot * pin.log3(rotation_desired @ rotation.T)
-                   + self._kd_rot * (np.asarray(target.angular_velocity_rad_s) - omega))
-        # Classical -> spatial linear acceleration in the base frame: a_s = a_c - w x v.
-        linear_local = rotation.T @ linear - cross3(v[3:6], v[0:3])
-        return np.concatenate([linear_local, rotation.T @ angular])
-
-    def _coupling_generalized_force(self, wrench_on_robot: np.ndarray, rotation: np.ndarray
-                                    ) -> np.ndarray:
-        """Free-flyer generalized force of a world wrench (force, torque about the coupling
-        point) applied at the coupling point on the base."""
-        force = np.asarray(wrench_on_robot[0:3], dtype=float)
-        torque = np.asarray(wrench_on_robot[3:6], dtype=float)
-        lever = rotation @ self.coupling_in_base_m
-        return np.concatenate([rotation.T @ force, rotation.T @ (torque + cross3(lever, force))])

@@ -153,16 +153,17 @@ class TeamController:
         self._flagged_in_row = 0
         self.obstacles = scenario.core_obstacles()
         gait = TrotGait(scenario.gait.period_s, scenario.gait.duty_factor)
+        self.cache = cache or CompiledCodeCache()
         self.robots: list[RobotControl] = []
         for agent, parameters in zip(team_settings.agents, self.team.robots, strict=True):
             model = load_pinocchio_model(agent.robot_type)
             wbc = WholeBodyController(model, standing_configuration(agent.robot_type, model),
                                       np.asarray(agent.coupling_point_in_robot_m),
-                                      FOOT_RADIUS_M[agent.robot_type], self.wbc_settings)
+                                      FOOT_RADIUS_M[agent.robot_type], self.wbc_settings,
+                                      self.cache)
             legs = LegCoordinator(parameters, gait, scenario.gait.swing_height_m)
             self.robots.append(RobotControl(agent.name, agent.robot_type, wbc, legs))
         self.estimator = PayloadEstimator(self.team)
-        self.cache = cache or CompiledCodeCache()
         # An NMPC thread beside the loop must leave every solve to worker processes.
         self._controller = (build_team_mpc(scenario, self.settings, self.cache,
                                            solve_first_here=not nmpc_shares_loop)

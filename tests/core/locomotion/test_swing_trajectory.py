@@ -43,3 +43,14 @@ def test_velocity_and_acceleration_are_time_derivatives() -> None:
 def test_rejects_non_positive_duration() -> None:
     with pytest.raises(ValueError, match="duration"):
         swing_point(START, END, 0.5, 0.0, 0.08)
+
+
+def test_legs_at_once_equal_one_leg_at_a_time() -> None:
+    rng = np.random.default_rng(1)
+    starts, ends = rng.normal(size=(3, 3)), rng.normal(size=(3, 3))
+    progress = np.array([-0.1, 0.37, 1.2])  # clipped to [0, 1] like a single leg's
+    together = swing_point(starts, ends, progress, 0.15, 0.08)
+    for leg in range(3):
+        alone = swing_point(starts[leg], ends[leg], float(progress[leg]), 0.15, 0.08)
+        for field in ("position_m", "velocity_m_s", "acceleration_m_s2"):
+            np.testing.assert_array_equal(getattr(together, field)[leg], getattr(alone, field))
