@@ -13,10 +13,11 @@ _SOURCES = {
     "core.locomotion.plan_tracking": ["LegCoordinator", "plan_set_point", "wbc_target"],
     "core.locomotion.settings": ["WbcSettings"],
     "core.locomotion.swing_trajectory": ["SwingPoint", "swing_point"],
+    "core.locomotion.wbc_qp": ["WbcQpArrays", "WbcQpAssembly", "so3_log"],
     "core.locomotion.whole_body_control": ["FloatingBaseState", "WbcTarget", "WbcOutput",
         "WholeBodyController"],
 }
 __all__ = ["FloatingBaseState", "FootholdPlanner", "LegCoordinator", "SwingPoint", "TrotGait",
-           "WbcOutput", "WbcSettings", "WbcTarget", "WholeBodyController", "plan_set_point",
-           "swing_point", "wbc_target"]
+           "WbcOutput", "WbcQpArrays", "WbcQpAssembly", "WbcSettings", "WbcTarget",
+           "WholeBodyController", "plan_set_point", "so3_log", "swing_point", "wbc_target"]
 __getattr__ = lazy_exports(__name__, _SOURCES)

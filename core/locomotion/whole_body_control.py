@@ -18,6 +18,9 @@ QP over x = (f, qdd), f the world-frame forces of the stance feet [N], solved wi
 and tau = M_j qdd + h_j - J_c,j^T f. Targets a* are PD laws on the planned trunk and the swing
 trajectories plus their feed-forward accelerations. The NMPC's SRB "position" is the CoM of the
 standing robot; the WBC places it at a fixed offset from the base (``com_offset_in_base_m``).
+The QP has a fixed size (all four feet's forces, a swing foot's pinned to zero) and is
+assembled by one CasADi function (``core.locomotion.wbc_qp``), compiled C when the controller
+is given a code cache.
 """
 
 from __future__ import annotations
