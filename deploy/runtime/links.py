@@ -65,6 +65,7 @@ class MocapTracker:
         self._raw: MocapFrame | None = None
         self._history: dict[str, collections.deque[tuple[float, np.ndarray]]] = {
             name: collections.deque() for name in bodies}
+        self._velocity: dict[str, np.ndarray] = {}  # the fit of each history as it is now
 
     def poll(self) -> MocapFrame | None:
         raw = self.client.latest()
@@ -85,6 +86,7 @@ class MocapTracker:
             history.append((raw.time_s, pose[0]))
             while history and history[0][0] < raw.time_s - self.window_s:
                 history.popleft()
+            self._velocity.pop(name, None)  # the fit changes with the window
         self.frame = MocapFrame(raw.time_s, poses)
         return self.frame
 
@@ -110,7 +112,14 @@ class MocapTracker:
         return [name for name in self.bodies if self.frame is None or name not in self.frame.poses]
 
     def velocity(self, name: str) -> np.ndarray:
-        """Least-squares linear velocity [m/s] of body ``name`` over the window, world frame."""
+        """Least-squares linear velocity [m/s] of body ``name`` over the window, world frame.
+        Fitted once per MoCap frame (120 Hz), not per read of it (500 Hz per robot)."""
+        velocity = self._velocity.get(name)
+        if velocity is None:
+            velocity = self._velocity[name] = self._fit_velocity(name)
+        return velocity.copy()
+
+    def _fit_velocity(self, name: str) -> np.ndarray:
         history = self._history[name]
         if len(history) < 2:
             return np.zeros(3)

@@ -15,6 +15,7 @@ MSB first, i.e. CRC-32/MPEG-2 over the big-endian bytes of each word.
 
 from __future__ import annotations
 
+import math
 import zlib
 from collections.abc import Callable, Sequence
 from dataclasses import dataclass, field
@@ -129,19 +130,25 @@ def measurement_from_wire_state(state: WireState, time_s: float,
         foot_contact=force_n > contact_threshold_n, foot_normal_force_n=force_n)
 
 
+# |q|, |dq|, |tau_est| of the leg motors, |gyroscope|: what a plausible state stays within
+_STATE_LIMITS = np.concatenate((np.full(JOINT_COUNT, MAX_JOINT_ANGLE_RAD),
+                                np.full(JOINT_COUNT, MAX_JOINT_SPEED_RAD_S),
+                                np.full(JOINT_COUNT, MAX_JOINT_TORQUE_NM),
+                                np.full(3, MAX_BODY_RATE_RAD_S)))
+
+
 def state_problem(state: WireState) -> str | None:
     """Why a received state must be rejected (a short reason tag), or None if plausible."""
     legs = WIRE_SLOT_OF_JOINT
-    arrays = (state.q_rad[legs], state.dq_rad_s[legs], state.tau_est_nm[legs],
-              state.quaternion_wxyz, state.gyroscope_rad_s)
-    if not all(np.isfinite(a).all() for a in arrays):
+    # one array of every checked value against one array of limits (a few NumPy calls per
+    # state instead of ~15: this runs per robot at 500 Hz)
+    values = np.concatenate((state.q_rad[legs], state.dq_rad_s[legs], state.tau_est_nm[legs],
+                             state.gyroscope_rad_s, state.quaternion_wxyz))
+    if not np.isfinite(values).all():
         return "non-finite"
-    if (np.abs(state.q_rad[legs]).max() > MAX_JOINT_ANGLE_RAD
-            or np.abs(state.dq_rad_s[legs]).max() > MAX_JOINT_SPEED_RAD_S
-            or np.abs(state.tau_est_nm[legs]).max() > MAX_JOINT_TORQUE_NM
-            or np.abs(state.gyroscope_rad_s).max() > MAX_BODY_RATE_RAD_S
-            or abs(float(np.linalg.norm(state.quaternion_wxyz)) - 1.0)
-            > QUATERNION_NORM_TOLERANCE):
+    quaternion = values[-4:]
+    if ((np.abs(values[:-4]) > _STATE_LIMITS).any()
+            or abs(math.sqrt(float(quaternion @ quaternion)) - 1.0) > QUATERNION_NORM_TOLERANCE):
         return "implausible"
     return None
 

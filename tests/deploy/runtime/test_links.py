@@ -56,6 +56,16 @@ def test_tracker_renames_bodies_ages_them_and_fits_a_velocity() -> None:
     np.testing.assert_allclose(velocity, [0.6, 0.0, 0.0], atol=1e-9)
     # the same frame again is not a new sample
     assert tracker.poll() is frame
+    # the fit is kept per frame: a caller's change to it stays with the caller, and the next
+    # frame (the robot stopped) changes it
+    tracker.velocity("go2_0")[:] = 99.0
+    np.testing.assert_allclose(tracker.velocity("go2_0"), [0.6, 0.0, 0.0], atol=1e-9)
+    for k in range(10, 20):
+        source.push(MocapFrame(k / 120.0, {"Robot A": (np.array([0.6 * 9 / 120, 0.0, 0.3]),
+                                                       IDENTITY)}))
+        tracker.poll()
+        clock.sleep(1.0 / 120.0)
+    np.testing.assert_allclose(tracker.velocity("go2_0"), 0.0, atol=1e-9)
 
 
 def test_a_pose_repeated_bit_for_bit_freezes_the_body_while_jitter_does_not() -> None:

@@ -132,3 +132,19 @@ def test_state_plausibility():
     fast = WireState()
     fast.dq_rad_s[0] = 1e4
     assert state_problem(fast) == "implausible"
+    # every limit, at its last leg slot, just inside and just outside
+    for field_name, limit in (("q_rad", 10.0), ("dq_rad_s", 200.0), ("tau_est_nm", 500.0),
+                              ("gyroscope_rad_s", 100.0)):
+        for sign in (1.0, -1.0):
+            state = WireState()
+            getattr(state, field_name)[WIRE_SLOT_OF_JOINT[-1] if field_name != "gyroscope_rad_s"
+                                       else 2] = sign * limit
+            assert state_problem(state) is None, field_name
+            getattr(state, field_name)[WIRE_SLOT_OF_JOINT[-1] if field_name != "gyroscope_rad_s"
+                                       else 2] = sign * limit * 1.001
+            assert state_problem(state) == "implausible", field_name
+    assert state_problem(WireState(quaternion_wxyz=np.array([1.049, 0.0, 0.0, 0.0]))) is None
+    assert state_problem(WireState(quaternion_wxyz=np.array([0.949, 0.0, 0.0, 0.0]))) == \
+        "implausible"
+    assert state_problem(WireState(gyroscope_rad_s=np.array([0.0, np.inf, 0.0]))) == \
+        "non-finite"
