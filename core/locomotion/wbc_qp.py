@@ -86,10 +86,15 @@ class WbcQpAssembly:
 
     def __init__(self, settings: WbcSettings, com_offset_in_base_m: np.ndarray,
                  coupling_in_base_m: np.ndarray, foot_radius_m: float,
-                 torque_limit_nm: np.ndarray, compiler: NlpCompiler | None = None) -> None:
-        """``compiler``: evaluate the assembly as compiled C from this cache (~3 µs per call
-        instead of ~30 µs through CasADi's SX virtual machine, measured); None: the SX
-        function (same outputs bit for bit, tested)."""
+                 torque_limit_nm: np.ndarray, compiler: NlpCompiler | None = None,
+                 jacobian_pattern: np.ndarray | None = None,
+                 mass_pattern: np.ndarray | None = None) -> None:
+        """``compiler``: evaluate the assembly as compiled C from this cache; None: the SX
+        function (same outputs bit for bit, tested). ``jacobian_pattern`` (12, 18) and
+        ``mass_pattern`` (18, 18): where the feet's Jacobian rows and the mass matrix can be
+        non-zero (the kinematic tree's structure; ``structural_patterns``); the assembly
+        reads only those entries, which cuts its operations ~3x (a foot's Jacobian touches 9
+        of the 18 velocities). None: dense."""
         self._sizes: list[tuple[str, int, int]] = [
             ("mass", VELOCITIES, VELOCITIES), ("bias", VELOCITIES, 1),
             ("contact_jacobian", FORCES, VELOCITIES), ("foot_drift", FORCES, 1),
@@ -113,6 +118,12 @@ class WbcQpAssembly:
             inputs[name] = ca.reshape(symbols[start:start + rows * cols], rows, cols)
             start += rows * cols
         self.views = views
+        for name, pattern in (("contact_jacobian", jacobian_pattern), ("mass", mass_pattern)):
+            if pattern is not None:
+                nonzero_rows, nonzero_cols = np.nonzero(pattern)
+                inputs[name] = ca.project(inputs[name], ca.Sparsity.triplet(
+                    int(pattern.shape[0]), int(pattern.shape[1]), nonzero_rows.tolist(),
+                    nonzero_cols.tolist()))
         outputs = _qp_expressions(inputs, settings, com_offset_in_base_m, coupling_in_base_m,
                                   foot_radius_m, np.asarray(torque_limit_nm, dtype=float))
         # dense outputs: the buffer interface writes nonzeros, DAQP reads full arrays

@@ -106,6 +106,29 @@ class WbcOutput:
     solve_time_s: float
 
 
+def structural_patterns(model: pin.Model, foot_frame_ids: list[int]
+                        ) -> tuple[np.ndarray, np.ndarray]:
+    """Where the feet's linear Jacobian rows (3 per foot, nv columns) and the mass matrix
+    (nv, nv) can be non-zero, from the kinematic tree: a foot moves with the joints that support
+    it; M couples two velocities when one joint supports the other."""
+    def columns(joint: int) -> list[int]:
+        return list(range(model.joints[joint].idx_v,
+                          model.joints[joint].idx_v + model.joints[joint].nv))
+
+    jacobian = np.zeros((3 * len(foot_frame_ids), model.nv), dtype=bool)
+    for foot, frame_id in enumerate(foot_frame_ids):
+        for joint in model.supports[model.frames[frame_id].parentJoint]:
+            if joint > 0:  # 0: the universe
+                jacobian[3 * foot:3 * foot + 3, columns(joint)] = True
+    mass = np.zeros((model.nv, model.nv), dtype=bool)
+    for joint in range(1, model.njoints):
+        for ancestor in model.supports[joint]:
+            if ancestor > 0:
+                mass[np.ix_(columns(joint), columns(ancestor))] = True
+                mass[np.ix_(columns(ancestor), columns(joint))] = True
+    return jacobian, mass
+
+
 class WholeBodyController:
     """WBC of one robot, built once per robot from its Pinocchio model.
 
@@ -132,7 +155,7 @@ class WholeBodyController:
         # the QP's arrays, assembled by one CasADi function (``wbc_qp``)
         self._qp = WbcQpAssembly(self.settings, self.com_offset_in_base_m,
                                  self.coupling_in_base_m, foot_radius_m, self.torque_limit_nm,
-                                 compiler)
+                                 compiler, *structural_patterns(model, self.foot_frame_ids))
         self._zero_acceleration = np.zeros(model.nv)
         # (state, q, v, rotation) whose rigid-body terms the Pinocchio data holds (``observe``)
         self._observed: tuple[FloatingBaseState, np.ndarray, np.ndarray, np.ndarray] | None = None

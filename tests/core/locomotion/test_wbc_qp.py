@@ -13,7 +13,12 @@ import pinocchio as pin
 import pytest
 
 from core.locomotion.wbc_qp import so3_log
-from core.locomotion.whole_body_control import FloatingBaseState, WbcTarget, WholeBodyController
+from core.locomotion.whole_body_control import (
+    FloatingBaseState,
+    WbcTarget,
+    WholeBodyController,
+    structural_patterns,
+)
 from core.model.rotations import rotation_from_euler
 from deploy.runtime.codegen_cache import CompiledCodeCache
 from drivers.robot_descriptions import FOOT_RADIUS_M, load_pinocchio_model, standing_configuration
@@ -182,3 +187,27 @@ def test_compiled_assembly_writes_the_same_arrays(tmp_path: Path) -> None:
     WholeBodyController(model, standing_configuration("go2", model),
                         np.array([0.05, -0.02, 0.1]), FOOT_RADIUS_M["go2"], compiler=cache)
     assert next(tmp_path.glob("wbc_qp_*.so")).stat().st_mtime_ns == library_time
+
+
+@pytest.mark.parametrize("robot_type", ["go2", "a1"])
+def test_structural_patterns_hold_every_non_zero(robot_type: str) -> None:
+    """The assembly reads the Jacobian and the mass matrix only inside these patterns: on
+    random configurations nothing outside them is non-zero, and a foot's rows are 9 columns
+    (the base's 6, its leg's 3)."""
+    model = load_pinocchio_model(robot_type)
+    data = model.createData()
+    feet = [model.getFrameId(f"{leg}_foot") for leg in ("FL", "FR", "RL", "RR")]
+    jacobian_pattern, mass_pattern = structural_patterns(model, feet)
+    assert jacobian_pattern.sum(axis=1).tolist() == [9] * 12
+    assert (mass_pattern == mass_pattern.T).all()
+    rng = np.random.default_rng(5)
+    for _ in range(10):
+        q = pin.randomConfiguration(model, -np.ones(model.nq), np.ones(model.nq))
+        pin.computeAllTerms(model, data, q, rng.normal(size=model.nv))
+        pin.updateFramePlacements(model, data)
+        jacobian = np.vstack([pin.getFrameJacobian(model, data, i, pin.LOCAL_WORLD_ALIGNED)[0:3]
+                              for i in feet])
+        mass = np.triu(data.M) + np.triu(data.M, 1).T
+        assert np.all(jacobian[~jacobian_pattern] == 0.0)
+        assert np.all(mass[~mass_pattern] == 0.0)
+        assert np.count_nonzero(jacobian[jacobian_pattern]) > 0.9 * jacobian_pattern.sum()
