@@ -93,7 +93,7 @@ class WbcQpAssembly:
         function (same outputs bit for bit, tested). ``jacobian_pattern`` (12, 18) and
         ``mass_pattern`` (18, 18): where the feet's Jacobian rows and the mass matrix can be
         non-zero (the kinematic tree's structure; ``structural_patterns``); the assembly
-        reads only those entries, which cuts its operations ~3x (a foot's Jacobian touches 9
+        reads only those entries, which halves its operations (a foot's Jacobian touches 9
         of the 18 velocities). None: dense."""
         self._sizes: list[tuple[str, int, int]] = [
             ("mass", VELOCITIES, VELOCITIES), ("bias", VELOCITIES, 1),
