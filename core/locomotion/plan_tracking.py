@@ -9,14 +9,19 @@ semi-implicit Euler model: v_{k+1} = v_k + Ts a_k), and GRFs and wrenches are he
 from __future__ import annotations
 
 from dataclasses import dataclass, field
+from typing import TYPE_CHECKING
 
 import numpy as np
 
 from core.locomotion.gait import FootholdPlanner, TrotGait
+from core.locomotion.swing_targets import SwingTargets
 from core.locomotion.swing_trajectory import swing_point
 from core.locomotion.whole_body_control import WbcTarget
 from core.model.srb_model import SrbParameters
 from core.nmpc.mpc_plan import MpcPlan
+
+if TYPE_CHECKING:  # a protocol only
+    from core.nmpc.nlp_solver import NlpCompiler
 
 
 @dataclass
@@ -35,6 +40,8 @@ class LegCoordinator:
     planner: FootholdPlanner = field(init=False)
     liftoff_m: np.ndarray = field(default_factory=lambda: np.zeros((4, 3)))
     stance: np.ndarray = field(default_factory=lambda: np.ones(4))
+    compiler: NlpCompiler | None = None  # the swing set-points as compiled C (else CasADi SX)
+    _set_points: SwingTargets | None = field(default=None, init=False, repr=False)
 
     def __post_init__(self) -> None:
         self.planner = FootholdPlanner(self.robot, self.gait, ground_height_m=self.ground_height_m)
@@ -68,7 +75,18 @@ class LegCoordinator:
                       velocity_reference_m_s: np.ndarray
                       ) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
         """Swing-foot contact-point position, velocity, acceleration (4, 3) each; stance legs
-        hold their footholds with zero velocity."""
+        hold their footholds with zero velocity. One call of ``SwingTargets`` (the same
+        arithmetic as ``swing_targets_numpy``, tested)."""
+        if self._set_points is None:
+            self._set_points = SwingTargets(self.planner, self.swing_height_m, self.compiler)
+        return self._set_points(time_s, robot_state, velocity_reference_m_s, self.liftoff_m,
+                                self.planner.feet_in_world_m, self.stance)
+
+    def swing_targets_numpy(self, time_s: float, robot_state: np.ndarray,
+                            velocity_reference_m_s: np.ndarray
+                            ) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+        """``swing_targets`` from the NumPy functions (``FootholdPlanner.swing_targets``,
+        ``swing_point``): the reference its compiled form is tested against."""
         targets = self.planner.swing_targets(time_s, robot_state, velocity_reference_m_s)
         progress = self.gait.swing_progress(time_s)
         position = self.planner.feet_in_world_m.copy()

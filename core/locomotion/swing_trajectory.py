@@ -20,7 +20,7 @@ import numpy as np
 
 # Coefficients of s^0 .. s^6 (rows) of m, dm/ds, d2m/ds2, b, db/ds, d2b/ds2 (columns), with
 # b(s) = 64 (s^3 - 3 s^4 + 3 s^5 - s^6): all six for all legs in one product with the powers.
-_POLYNOMIALS = np.array([
+POLYNOMIALS = np.array([
     #  m      dm     ddm      b      db      ddb
     [0.0,    0.0,    0.0,    0.0,    0.0,     0.0],
     [0.0,    0.0,   60.0,    0.0,    0.0,   384.0],
@@ -51,7 +51,7 @@ def swing_point(liftoff_m: np.ndarray, touchdown_m: np.ndarray, progress: float 
     s = np.minimum(np.maximum(progress, 0.0), 1.0)
     # (..., 6): m, dm, ddm, b, db, ddb with the derivatives in time (1/T, 1/T^2 per order)
     scale = np.array([1.0, 1.0 / duration_s, duration_s**-2.0] * 2)
-    values = (np.power.outer(s, _POWERS) @ _POLYNOMIALS) * scale
+    values = (np.power.outer(s, _POWERS) @ POLYNOMIALS) * scale
     start = np.asarray(liftoff_m, dtype=float)
     delta = np.asarray(touchdown_m, dtype=float) - start
     # (..., 3 orders, 3 axes): delta times m's three, plus the lift (z only) times b's three

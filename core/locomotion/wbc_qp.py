@@ -17,13 +17,13 @@ the solver's round-off (tested against it).
 
 from __future__ import annotations
 
-import hashlib
 from dataclasses import dataclass
 from typing import TYPE_CHECKING
 
 import casadi as ca
 import numpy as np
 
+from core.locomotion.buffered_function import BufferedFunction, ParameterVector
 from core.locomotion.settings import WbcSettings
 from core.model.srb_model import rotation_body_to_world
 
@@ -105,19 +105,10 @@ class WbcQpAssembly:
             ("stance", FEET, 1), ("planned_grf", FORCES, 1), ("foot_position", FORCES, 1),
             ("foot_velocity", FORCES, 1), ("foot_acceleration", FORCES, 1),
             ("wrench_on_robot", 6, 1)]
-        total = sum(rows * cols for _, rows, cols in self._sizes)
-        self.parameters = np.zeros(total)
-        symbols = ca.SX.sym("p", total)
-        views: dict[str, np.ndarray] = {}
-        inputs: dict[str, ca.SX] = {}
-        start = 0
-        for name, rows, cols in self._sizes:
-            block = self.parameters[start:start + rows * cols]
-            # column-major, as CasADi reads a dense matrix; 1-D for vectors
-            views[name] = block if cols == 1 else block.reshape((rows, cols), order="F")
-            inputs[name] = ca.reshape(symbols[start:start + rows * cols], rows, cols)
-            start += rows * cols
-        self.views = views
+        parameters = ParameterVector(self._sizes)
+        self.parameters = parameters.values
+        self.views = parameters.views
+        inputs = dict(parameters.symbols)
         for name, pattern in (("contact_jacobian", jacobian_pattern), ("mass", mass_pattern)):
             if pattern is not None:
                 nonzero_rows, nonzero_cols = np.nonzero(pattern)
@@ -126,33 +117,18 @@ class WbcQpAssembly:
                     nonzero_cols.tolist()))
         outputs = _qp_expressions(inputs, settings, com_offset_in_base_m, coupling_in_base_m,
                                   foot_radius_m, np.asarray(torque_limit_nm, dtype=float))
-        # dense outputs: the buffer interface writes nonzeros, DAQP reads full arrays
-        self.function = ca.Function("wbc_qp", [symbols], [ca.densify(x) for x in outputs])
-        self.compiled = compiler is not None
-        evaluated = self.function
-        if compiler is not None:
-            digest = hashlib.sha256(self.function.serialize().encode())
-            digest.update(ca.__version__.encode())  # type: ignore[attr-defined]
-            function = self.function
-
-            def generate_c(path: str) -> None:
-                function.generate(path)
-
-            library = compiler.library_for("wbc_qp", digest.hexdigest()[:16], generate_c)
-            evaluated = ca.external("wbc_qp", library)
         self.arrays = WbcQpArrays(np.zeros((VARIABLES, VARIABLES)), np.zeros(VARIABLES),
                                   np.zeros((CONSTRAINT_ROWS, VARIABLES)),
                                   np.zeros(FORCES + CONSTRAINT_ROWS),
                                   np.zeros(FORCES + CONSTRAINT_ROWS))
-        self._buffer, self._evaluate = evaluated.buffer()
-        # CasADi's Python binding takes (index, memoryview) and reads the size from the view;
-        # its type stubs list the C++ signature with the size
-        self._buffer.set_arg(0, memoryview(self.parameters))  # type: ignore[call-arg, arg-type]
-        for index, array in enumerate((self.arrays.hessian, self.arrays.gradient,
-                                       self.arrays.constraint, self.arrays.upper,
-                                       self.arrays.lower)):
-            # the constraint output is A^T column-major, i.e. A row-major (C order)
-            self._buffer.set_res(index, memoryview(array.reshape(-1)))  # type: ignore[call-arg, arg-type]
+        # the constraint output is A^T column-major, i.e. A row-major (C order), as DAQP reads
+        self._function = BufferedFunction(
+            "wbc_qp", parameters, list(outputs),
+            [self.arrays.hessian, self.arrays.gradient, self.arrays.constraint,
+             self.arrays.upper, self.arrays.lower], compiler)
+        self.function = self._function.function
+        self.compiled = self._function.compiled
+        self._evaluate = self._function.evaluate
         self._senses = [_sense(pattern) for pattern in range(1 << FEET)]
 
     def assemble(self) -> WbcQpArrays:

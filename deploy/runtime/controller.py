@@ -161,7 +161,8 @@ class TeamController:
                                       np.asarray(agent.coupling_point_in_robot_m),
                                       FOOT_RADIUS_M[agent.robot_type], self.wbc_settings,
                                       self.cache)
-            legs = LegCoordinator(parameters, gait, scenario.gait.swing_height_m)
+            legs = LegCoordinator(parameters, gait, scenario.gait.swing_height_m,
+                                  compiler=self.cache)
             self.robots.append(RobotControl(agent.name, agent.robot_type, wbc, legs))
         self.estimator = PayloadEstimator(self.team)
         # An NMPC thread beside the loop must leave every solve to worker processes.
