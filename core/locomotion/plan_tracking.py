@@ -41,10 +41,13 @@ class LegCoordinator:
     liftoff_m: np.ndarray = field(default_factory=lambda: np.zeros((4, 3)))
     stance: np.ndarray = field(default_factory=lambda: np.ones(4))
     compiler: NlpCompiler | None = None  # the swing set-points as compiled C (else CasADi SX)
-    _set_points: SwingTargets | None = field(default=None, init=False, repr=False)
+    _set_points: SwingTargets = field(init=False, repr=False)
 
     def __post_init__(self) -> None:
         self.planner = FootholdPlanner(self.robot, self.gait, ground_height_m=self.ground_height_m)
+        # built (and its library loaded) here, not at the first swing: that is a tick of the
+        # real-time loop, and ~10-20 ms there let the watchdog take over (measured)
+        self._set_points = SwingTargets(self.planner, self.swing_height_m, self.compiler)
 
     def reset(self, robot_state: np.ndarray, measured_feet_m: np.ndarray) -> None:
         """Standing start: all legs in stance at their measured positions."""
@@ -77,8 +80,6 @@ class LegCoordinator:
         """Swing-foot contact-point position, velocity, acceleration (4, 3) each; stance legs
         hold their footholds with zero velocity. One call of ``SwingTargets`` (the same
         arithmetic as ``swing_targets_numpy``, tested)."""
-        if self._set_points is None:
-            self._set_points = SwingTargets(self.planner, self.swing_height_m, self.compiler)
         return self._set_points(time_s, robot_state, velocity_reference_m_s, self.liftoff_m,
                                 self.planner.feet_in_world_m, self.stance)
 

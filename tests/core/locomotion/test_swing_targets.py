@@ -60,5 +60,14 @@ def test_compiled_function_is_the_interpreted_one(tmp_path: Path) -> None:
                               _walk(compiled, np.random.default_rng(4), 100), strict=True):
         for got, expected in zip(b, a, strict=True):
             np.testing.assert_array_equal(got, expected)
-    assert compiled._set_points is not None and compiled._set_points.compiled
+    assert compiled._set_points.compiled
     assert len(list(tmp_path.glob("swing_targets_*.so"))) == 1
+
+
+def test_the_function_is_built_with_the_coordinator_not_in_a_tick(tmp_path: Path) -> None:
+    """Its library is compiled and loaded when the coordinator is built: the first swing of a
+    run happens inside a real-time tick, where ~10-20 ms of loading tripped the watchdog."""
+    legs = LegCoordinator(srb_parameters("go2"), TrotGait(0.3, 0.5), 0.08,
+                          compiler=CompiledCodeCache(tmp_path))
+    assert len(list(tmp_path.glob("swing_targets_*.so"))) == 1
+    assert legs._set_points.compiled
