@@ -8,14 +8,10 @@ normal call from Python (measured), which is what makes a function per robot and
 
 from __future__ import annotations
 
-import hashlib
-from typing import TYPE_CHECKING
-
 import casadi as ca
 import numpy as np
 
-if TYPE_CHECKING:  # a protocol only; the NMPC package need not load
-    from core.nmpc.nlp_solver import NlpCompiler
+from core.nmpc.nlp_solver import NlpCompiler, function_key
 
 __all__ = ["BufferedFunction", "ParameterVector"]
 
@@ -53,14 +49,12 @@ class BufferedFunction:
         self.compiled = compiler is not None
         evaluated = self.function
         if compiler is not None:
-            digest = hashlib.sha256(self.function.serialize().encode())
-            digest.update(ca.__version__.encode())  # type: ignore[attr-defined]
             function = self.function
 
             def generate_c(path: str) -> None:
                 function.generate(path)
 
-            library = compiler.library_for(name, digest.hexdigest()[:16], generate_c)
+            library = compiler.library_for(name, function_key(function), generate_c)
             evaluated = ca.external(name, library)
         self.results = results
         self._buffer, self.evaluate = evaluated.buffer()

@@ -15,7 +15,6 @@ import numpy as np
 
 from core.locomotion.gait import FootholdPlanner, TrotGait
 from core.locomotion.swing_targets import SwingTargets
-from core.locomotion.swing_trajectory import swing_point
 from core.locomotion.whole_body_control import WbcTarget
 from core.model.srb_model import SrbParameters
 from core.nmpc.mpc_plan import MpcPlan
@@ -78,29 +77,10 @@ class LegCoordinator:
                       velocity_reference_m_s: np.ndarray
                       ) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
         """Swing-foot contact-point position, velocity, acceleration (4, 3) each; stance legs
-        hold their footholds with zero velocity. One call of ``SwingTargets`` (the same
-        arithmetic as ``swing_targets_numpy``, tested)."""
+        hold their footholds with zero velocity. One call of ``SwingTargets`` (the arithmetic of
+        ``FootholdPlanner.swing_targets`` and ``swing_point``, tested against them)."""
         return self._set_points(time_s, robot_state, velocity_reference_m_s, self.liftoff_m,
                                 self.planner.feet_in_world_m, self.stance)
-
-    def swing_targets_numpy(self, time_s: float, robot_state: np.ndarray,
-                            velocity_reference_m_s: np.ndarray
-                            ) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
-        """``swing_targets`` from the NumPy functions (``FootholdPlanner.swing_targets``,
-        ``swing_point``): the reference its compiled form is tested against."""
-        targets = self.planner.swing_targets(time_s, robot_state, velocity_reference_m_s)
-        progress = self.gait.swing_progress(time_s)
-        position = self.planner.feet_in_world_m.copy()
-        velocity = np.zeros((4, 3))
-        acceleration = np.zeros((4, 3))
-        swing = self.stance == 0.0
-        if swing.any():  # all swing legs in one evaluation
-            point = swing_point(self.liftoff_m[swing], targets[swing], progress[swing],
-                                self.gait.swing_duration_s, self.swing_height_m)
-            position[swing] = point.position_m
-            velocity[swing] = point.velocity_m_s
-            acceleration[swing] = point.acceleration_m_s2
-        return position, velocity, acceleration
 
 
 def plan_set_point(plan: MpcPlan, agent: int, elapsed_s: float, sample_period_s: float

@@ -18,6 +18,7 @@ import numpy as np
 from core.locomotion.buffered_function import BufferedFunction, ParameterVector
 from core.locomotion.gait import TROT_OFFSETS, FootholdPlanner
 from core.locomotion.swing_trajectory import POLYNOMIALS
+from core.model.srb_model import rotation_body_to_world
 
 if TYPE_CHECKING:  # a protocol only; the NMPC package need not load
     from core.nmpc.nlp_solver import NlpCompiler
@@ -46,7 +47,11 @@ class SwingTargets:
         self._results = [np.zeros((_FEET, 3)) for _ in range(3)]
         self._function = BufferedFunction("swing_targets", parameters, outputs,
                                           self._results, compiler)
-        self.compiled = self._function.compiled
+
+    @property
+    def compiled(self) -> bool:
+        """Whether the set-points run as compiled C (else in CasADi's SX virtual machine)."""
+        return self._function.compiled
 
     def __call__(self, time_s: float, robot_state: np.ndarray, velocity_reference: np.ndarray,
                  liftoff_m: np.ndarray, footholds_m: np.ndarray, stance: np.ndarray
@@ -71,9 +76,7 @@ def _set_point_expressions(p: dict[str, ca.SX], planner: FootholdPlanner,
     neutral = planner.robot.nominal_feet_in_body_m
     if neutral is None:
         neutral = planner.robot.hip_positions_in_body_m
-    yaw = state[8]
-    rotation = ca.vertcat(ca.horzcat(ca.cos(yaw), -ca.sin(yaw), 0),
-                          ca.horzcat(ca.sin(yaw), ca.cos(yaw), 0), ca.horzcat(0, 0, 1))
+    rotation = rotation_body_to_world(ca.vertcat(0.0, 0.0, state[8]))  # Rz(yaw), as yaw_rotation
     raibert = reference * gait.stance_duration_s / 2 + planner.velocity_gain * (velocity
                                                                                - reference)
     scale = np.array([1.0, 1.0 / gait.swing_duration_s, gait.swing_duration_s**-2.0] * 2)

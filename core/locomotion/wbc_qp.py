@@ -95,7 +95,7 @@ class WbcQpAssembly:
         non-zero (the kinematic tree's structure; ``structural_patterns``); the assembly
         reads only those entries, which halves its operations (a foot's Jacobian touches 9
         of the 18 velocities). None: dense."""
-        self._sizes: list[tuple[str, int, int]] = [
+        parameters = ParameterVector([
             ("mass", VELOCITIES, VELOCITIES), ("bias", VELOCITIES, 1),
             ("contact_jacobian", FORCES, VELOCITIES), ("foot_drift", FORCES, 1),
             ("foot_frame", FORCES, 1), ("velocity", VELOCITIES, 1), ("rotation", 3, 3),
@@ -104,9 +104,7 @@ class WbcQpAssembly:
             ("euler", 3, 1), ("angular_velocity", 3, 1), ("angular_acceleration", 3, 1),
             ("stance", FEET, 1), ("planned_grf", FORCES, 1), ("foot_position", FORCES, 1),
             ("foot_velocity", FORCES, 1), ("foot_acceleration", FORCES, 1),
-            ("wrench_on_robot", 6, 1)]
-        parameters = ParameterVector(self._sizes)
-        self.parameters = parameters.values
+            ("wrench_on_robot", 6, 1)])
         self.views = parameters.views
         inputs = dict(parameters.symbols)
         for name, pattern in (("contact_jacobian", jacobian_pattern), ("mass", mass_pattern)):
@@ -126,14 +124,16 @@ class WbcQpAssembly:
             "wbc_qp", parameters, list(outputs),
             [self.arrays.hessian, self.arrays.gradient, self.arrays.constraint,
              self.arrays.upper, self.arrays.lower], compiler)
-        self.function = self._function.function
-        self.compiled = self._function.compiled
-        self._evaluate = self._function.evaluate
         self._senses = [_sense(pattern) for pattern in range(1 << FEET)]
+
+    @property
+    def compiled(self) -> bool:
+        """Whether the assembly runs as compiled C (else in CasADi's SX virtual machine)."""
+        return self._function.compiled
 
     def assemble(self) -> WbcQpArrays:
         """Evaluate the QP for the inputs as filled now (no allocation)."""
-        self._evaluate()
+        self._function.evaluate()
         return self.arrays
 
     def sense(self, stance: np.ndarray) -> np.ndarray:

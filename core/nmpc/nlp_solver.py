@@ -66,8 +66,14 @@ def problem_key(problem: NlpProblem, plugin: str) -> str:
         "key", [problem.decision.vector(), problem.parameters.vector()],
         [problem.objective, problem.constraints],
     )
+    return function_key(function, plugin)
+
+
+def function_key(function: ca.Function, salt: str = "") -> str:
+    """Cache key of compiled code generated from ``function``: a hash of its expressions,
+    ``salt`` (e.g. the solver plugin) and the CasADi version."""
     digest = hashlib.sha256(function.serialize().encode())
-    digest.update(f"{plugin}|{ca.__version__}".encode())  # type: ignore[attr-defined]
+    digest.update(f"{salt}|{ca.__version__}".encode())  # type: ignore[attr-defined]
     return digest.hexdigest()[:16]
 
 

@@ -10,8 +10,29 @@ import pytest
 
 from core.locomotion.gait import TrotGait
 from core.locomotion.plan_tracking import LegCoordinator
+from core.locomotion.swing_trajectory import swing_point
 from deploy.runtime.codegen_cache import CompiledCodeCache
 from drivers.robot_descriptions import srb_parameters
+
+
+def _numpy_set_points(legs: LegCoordinator, time_s: float, robot_state: np.ndarray,
+                      velocity_reference_m_s: np.ndarray
+                      ) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+    """The reference: ``FootholdPlanner.swing_targets`` and ``swing_point`` in NumPy, as the
+    coordinator computed its set-points before ``SwingTargets``."""
+    targets = legs.planner.swing_targets(time_s, robot_state, velocity_reference_m_s)
+    progress = legs.gait.swing_progress(time_s)
+    position = legs.planner.feet_in_world_m.copy()
+    velocity = np.zeros((4, 3))
+    acceleration = np.zeros((4, 3))
+    swing = legs.stance == 0.0
+    if swing.any():
+        point = swing_point(legs.liftoff_m[swing], targets[swing], progress[swing],
+                            legs.gait.swing_duration_s, legs.swing_height_m)
+        position[swing] = point.position_m
+        velocity[swing] = point.velocity_m_s
+        acceleration[swing] = point.acceleration_m_s2
+    return position, velocity, acceleration
 
 
 def _walk(legs: LegCoordinator, rng: np.random.Generator, ticks: int
@@ -35,7 +56,7 @@ def _walk(legs: LegCoordinator, rng: np.random.Generator, ticks: int
         measured = feet + rng.normal(size=(4, 3)) * 0.01
         legs.advance(t, state, reference, measured)
         pairs.append((legs.swing_targets(t, state, reference[3:6]),
-                      legs.swing_targets_numpy(t, state, reference[3:6])))
+                      _numpy_set_points(legs, t, state, reference[3:6])))
     return pairs
 
 
