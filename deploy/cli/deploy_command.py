@@ -129,7 +129,7 @@ def run_deploy(args: argparse.Namespace) -> int:
         if process is not None:
             process.clock = clock
         if backend is not None and config.sim.faults:  # drills: faults of porter's own
-            faults = PorterFaults(config.sim.faults, clock)
+            faults = PorterFaults(config.sim.faults, clock, backend.start_s)
             runner = faults.runner(runner or NmpcThread(control, clock))
             faults.recorder(recorder)
             sleep = faults.sleep(sleep)

@@ -93,6 +93,9 @@ class SimBackend:
             raise DriverError(f"the simulated world failed to start: {payload}")
         self.config = self._with_endpoints(world_config, payload)
         self.clock = ScaledClock(config.sim.time_scale)
+        # The world's time zero on ``clock``: its faults are due from here, and porter's own
+        # (``PorterFaults``) must count from the same instant, not from porter's later start-up.
+        self.start_s = config.sim.time_scale * float(payload["start_monotonic_s"])
         self.can_bus = can.Bus(interface="virtual", channel=tag)
         self._can_in = can_out
         self._bridge = threading.Thread(target=self._forward_can, name="porter-sim-can-bridge",

@@ -1,6 +1,8 @@
 """Faults porter injects into its own process on the sim backend (drills and tests): the
 ``sim.faults`` kinds in ``deploy.config.deploy_config.PORTER_FAULTS``, due ``at_s`` after the
-first look at the loop's clock (the world's start, within the start-up's few milliseconds).
+world's start (``SimBackend.start_s``), the instant the world's own faults count from: porter's
+start-up after it (links, recorder) takes 0.1-0.3 simulated s, which would otherwise delay
+porter's faults against the world's ground truth by as much.
 
 ``nmpc_failure``: from then on every NMPC plan is a failed solve (a solver that stops
 converging); ``recorder_failure``: every flight-log write fails with ENOSPC (a full disk);
@@ -28,11 +30,13 @@ STALL_S = 0.3  # wall seconds of a loop stall
 
 
 class PorterFaults:
-    """The porter-side faults of ``faults`` on ``clock``; wraps what they act on."""
+    """The porter-side faults of ``faults`` on ``clock``, due ``at_s`` after ``start_s`` (on
+    ``clock``; its first look if None); wraps what they act on."""
 
-    def __init__(self, faults: list[SimFault], clock: Callable[[], float]) -> None:
+    def __init__(self, faults: list[SimFault], clock: Callable[[], float],
+                 start_s: float | None = None) -> None:
         self.clock = clock
-        self.start_s = clock()
+        self.start_s = clock() if start_s is None else start_s
         self.due_s: dict[str, float] = {fault.kind: fault.at_s for fault in faults
                                          if fault.kind in PORTER_FAULTS}
         self._stalled = False

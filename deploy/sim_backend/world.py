@@ -244,10 +244,12 @@ class SimWorld:
         elif counts.first_damping_s is None and np.any(command.kd > 0.0):
             counts.first_damping_s = since_s
 
-    def endpoints(self) -> dict[str, Any]:
-        """Where the fakes listen: NatNet command port, each A1's UDP (address, port)."""
+    def endpoints(self, start_monotonic_s: float) -> dict[str, Any]:
+        """Where the fakes listen: NatNet command port, each A1's UDP (address, port); and the
+        instant the world's time starts (``time.monotonic()``, system-wide), from which its
+        ``sim.faults`` are due."""
         return {"natnet_command_port": self.natnet.command_port,
-                "a1": dict(self.a1_endpoints)}
+                "a1": dict(self.a1_endpoints), "start_monotonic_s": start_monotonic_s}
 
     def _poses(self) -> dict[str, Pose]:
         sim = self.simulation
@@ -283,15 +285,16 @@ class SimWorld:
             self.min_height_m[name] = min(self.min_height_m[name], float(position[2]))
             self.max_tilt_rad[name] = max(self.max_tilt_rad[name], tilt_rad(quaternion))
 
-    def run(self, control: Connection) -> None:
-        """Real-time loop until ``"stop"`` arrives or the parent's end of ``control`` closes
-        (then, with ``sim.orphan_report``, ``ORPHAN_RUN_S`` more and the report)."""
+    def run(self, control: Connection, start_monotonic_s: float | None = None) -> None:
+        """Real-time loop from ``start_monotonic_s`` (``time.monotonic()``; now if None) until
+        ``"stop"`` arrives or the parent's end of ``control`` closes (then, with
+        ``sim.orphan_report``, ``ORPHAN_RUN_S`` more and the report)."""
         sim, settings = self.simulation, self.config.sim
         dt = sim.timestep_s
         scale = settings.time_scale
         cycle_steps = max(1, round(1.0 / (settings.state_rate_hz * dt)))
         mocap_period_s, ft_period_s = 1.0 / settings.mocap_rate_hz, 1.0 / settings.force_torque_rate_hz
-        start = time.monotonic()
+        start = time.monotonic() if start_monotonic_s is None else start_monotonic_s
         start_sim_s = next_mocap_s = next_ft_s = sim.time_s
         orphan_since_s: float | None = None
         while True:
@@ -364,8 +367,9 @@ def serve(spec: WorldSpec, control: Connection, can_link: Connection) -> None:
         return
     freeze_startup_objects()  # no full collection of the scene's objects while it runs
     try:
-        control.send(("ready", world.endpoints()))
-        world.run(control)
+        start_monotonic_s = time.monotonic()
+        control.send(("ready", world.endpoints(start_monotonic_s)))
+        world.run(control, start_monotonic_s)
     except (EOFError, BrokenPipeError, KeyboardInterrupt):
         pass  # the parent is gone or interrupted
     finally:
