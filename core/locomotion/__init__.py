@@ -13,6 +13,7 @@ _SOURCES = {
     "core.locomotion.plan_tracking": ["LegCoordinator", "plan_set_point", "wbc_target"],
     "core.locomotion.buffered_function": ["BufferedFunction", "ParameterVector"],
     "core.locomotion.settings": ["WbcSettings"],
+    "core.locomotion.state_conversion": ["StateConversion"],
     "core.locomotion.swing_targets": ["SwingTargets"],
     "core.locomotion.swing_trajectory": ["SwingPoint", "swing_point"],
     "core.locomotion.wbc_qp": ["WbcQpArrays", "WbcQpAssembly", "so3_log"],
@@ -20,7 +21,7 @@ _SOURCES = {
         "WholeBodyController"],
 }
 __all__ = ["BufferedFunction", "FloatingBaseState", "FootholdPlanner", "LegCoordinator",
-           "ParameterVector", "SwingPoint", "SwingTargets", "TrotGait", "WbcOutput",
+           "ParameterVector", "StateConversion", "SwingPoint", "SwingTargets", "TrotGait", "WbcOutput",
            "WbcQpArrays", "WbcQpAssembly", "WbcSettings", "WbcTarget", "WholeBodyController",
            "plan_set_point", "so3_log", "swing_point", "wbc_target"]
 __getattr__ = lazy_exports(__name__, _SOURCES)

@@ -34,6 +34,7 @@ import numpy as np
 import pinocchio as pin
 
 from core.locomotion.settings import WbcSettings
+from core.locomotion.state_conversion import StateConversion
 from core.locomotion.wbc_qp import FORCES, TORQUE_ROWS, WbcQpAssembly
 from core.model.conventions import JOINT_COUNT, LEG_NAMES
 from core.model.rotations import (
@@ -157,6 +158,7 @@ class WholeBodyController:
                                  self.coupling_in_base_m, foot_radius_m, self.torque_limit_nm,
                                  compiler, *structural_patterns(model, self.foot_frame_ids))
         self._zero_acceleration = np.zeros(model.nv)
+        self._conversion = StateConversion(self.com_offset_in_base_m, compiler)
         # (state, q, v, rotation) whose rigid-body terms the Pinocchio data holds (``observe``)
         self._observed: tuple[FloatingBaseState, np.ndarray, np.ndarray, np.ndarray] | None = None
 
@@ -199,13 +201,15 @@ class WholeBodyController:
     def observe(self, state: FloatingBaseState) -> tuple[np.ndarray, np.ndarray]:
         """``srb_state`` and ``foot_positions`` of ``state`` from one Pinocchio pass, whose
         rigid-body terms the next ``compute`` on this same state object reuses (one pass per
-        robot and tick instead of three)."""
-        rotation = state.rotation()
-        q, v = self.pinocchio_state(state, rotation)
+        robot and tick instead of three). The state's conversions are one compiled function
+        (``core.locomotion.state_conversion``), equal to ``pinocchio_state`` and ``srb_state``
+        to round-off."""
+        # q, v, rotation: the conversion's own arrays, read by ``compute`` within this tick
+        q, v, rotation, srb = self._conversion(state)
         pin.computeAllTerms(self.model, self.data, q, v)
         pin.updateFramePlacements(self.model, self.data)
         self._observed = (state, q, v, rotation)
-        return self.srb_state(state, rotation), self._feet()
+        return srb, self._feet()
 
     # --- control -------------------------------------------------------------------------
     def compute(self, state: FloatingBaseState, target: WbcTarget) -> WbcOutput:
