@@ -15,6 +15,7 @@ from core.model.srb_model import SrbParameters
 
 # Phase offsets of FL, FR, RL, RR in a trot.
 TROT_OFFSETS = np.array([0.0, 0.5, 0.5, 0.0])
+_OFFSETS = tuple(float(offset) for offset in TROT_OFFSETS)
 
 
 @dataclass(frozen=True)
@@ -26,8 +27,10 @@ class TrotGait:
 
     def contacts(self, time_s: float) -> np.ndarray:
         """(4,) stance flags at ``time_s``."""
-        phase = np.mod(time_s / self.period_s + TROT_OFFSETS, 1.0)
-        return (phase < self.duty_factor).astype(float)
+        # four floats in Python: the same IEEE operations as np.mod over TROT_OFFSETS (a
+        # float's % is floor-modulo as np.mod's), a few µs less per robot and 500 Hz tick
+        cycles, duty = time_s / self.period_s, self.duty_factor
+        return np.array([float((cycles + offset) % 1.0 < duty) for offset in _OFFSETS])
 
     def schedule(self, time_s: float, steps: int, sample_period_s: float) -> np.ndarray:
         """(steps, 4) stance flags at stages k = 0..steps-1 starting at ``time_s``."""
@@ -96,9 +99,12 @@ class FootholdPlanner:
         feet[:, 2] = self.ground_height_m
         return feet
 
-    def update(self, time_s: float, robot_state: np.ndarray, reference_state: np.ndarray) -> None:
-        """Advance to ``time_s``: a leg that touches down now lands at its Raibert foothold."""
-        stance = self.gait.contacts(time_s)
+    def update(self, time_s: float, robot_state: np.ndarray, reference_state: np.ndarray,
+               stance: np.ndarray | None = None) -> None:
+        """Advance to ``time_s``: a leg that touches down now lands at its Raibert foothold.
+        ``stance``: the gait's contacts at ``time_s`` when the caller has them."""
+        if stance is None:
+            stance = self.gait.contacts(time_s)
         landing = (stance == 1.0) & (self._stance == 0.0)
         if np.any(landing):
             target = self._raibert(robot_state, 0.0, reference_state[3:6])

@@ -64,10 +64,13 @@ class LegCoordinator:
                 measured_feet_m: np.ndarray) -> np.ndarray:
         """Move to ``time_s``; returns the (4,) stance flags now."""
         stance = self.gait.contacts(time_s)
+        if np.array_equal(stance, self.stance):  # most ticks: no leg lifts or lands
+            self.planner.update(time_s, robot_state, reference_state, stance)
+            return stance
         lifting = (stance == 0.0) & (self.stance == 1.0)
         landing = (stance == 1.0) & (self.stance == 0.0)
         self.liftoff_m[lifting] = np.asarray(measured_feet_m)[lifting]
-        self.planner.update(time_s, robot_state, reference_state)
+        self.planner.update(time_s, robot_state, reference_state, stance)
         if np.any(landing):
             self._set_feet(measured_feet_m, landing)
         self.stance = stance

@@ -5,7 +5,7 @@ from __future__ import annotations
 import numpy as np
 import pytest
 
-from core.locomotion.gait import FootholdPlanner, TrotGait
+from core.locomotion.gait import TROT_OFFSETS, FootholdPlanner, TrotGait
 from drivers.robot_descriptions import srb_parameters
 
 
@@ -17,6 +17,20 @@ def test_trot_alternates_diagonal_pairs() -> None:
     schedule = gait.schedule(0.0, 40, 0.01)
     assert np.all(schedule.sum(axis=1) == 2)
     assert schedule[:, 0].mean() == pytest.approx(0.5)
+
+
+def test_contacts_are_the_numpy_phase_rule_exactly() -> None:
+    """The four-float contacts equal np.mod's phase rule on every tick of 30 s, at negative
+    times and on the exact phase edges (a tick landing on the duty factor is swing)."""
+    rng = np.random.default_rng(11)
+    for gait in (TrotGait(), TrotGait(period_s=0.4, duty_factor=0.6)):
+        times = np.concatenate([np.arange(15000) * 0.002, rng.uniform(-5.0, 5.0, 2000),
+                                gait.period_s * np.array([0.0, 0.5, gait.duty_factor, 1.0,
+                                                          -0.5, 1.5 - gait.duty_factor])])
+        for time_s in times:
+            phase = np.mod(float(time_s) / gait.period_s + TROT_OFFSETS, 1.0)
+            np.testing.assert_array_equal(gait.contacts(float(time_s)),
+                                          (phase < gait.duty_factor).astype(float))
 
 
 def test_swing_progress_and_touchdown_time() -> None:
