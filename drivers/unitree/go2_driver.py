@@ -69,6 +69,7 @@ MOTION_SWITCHER_SERVICE = "motion_switcher"
 API_ID_RELEASE_MODE = 1003
 # states between two polls are all checked and counted (the newest valid one is kept)
 STATE_QUEUE = Qos(Policy.Reliability.BestEffort, Policy.History.KeepLast(16))
+RELEASE_RETRY_S = 0.25  # ReleaseMode asked again after this long without an answer [s]
 REQUEST_QOS = Qos(Policy.Reliability.Reliable(duration(milliseconds=100)),
                   Policy.History.KeepLast(8))
 
@@ -211,7 +212,8 @@ class Go2Driver(UnitreeLowLevelDriver):
         ``MotionSwitcherClient.ReleaseMode`` sends it; waits for the ``Response_`` of the same
         identity on ``.../response`` and returns its status code (0 = success). UNVERIFIED on a
         robot: the API types follow unitree_sdk2's IDL, and the SDK first calls CheckMode
-        (api 1001) and repeats ReleaseMode until no mode is active; this sends one request.
+        (api 1001) and repeats ReleaseMode until no mode is active; this asks again every
+        ``RELEASE_RETRY_S`` until the first answer (to any of its requests).
         Raises ``DriverError`` when no service answers within ``timeout_s`` [s].
         """
         service = f"api/{MOTION_SWITCHER_SERVICE}"
@@ -231,14 +233,25 @@ class Go2Driver(UnitreeLowLevelDriver):
                 raise DriverError(f"{self._name}: no motion-switcher service on "
                                   f"{writer.topic.name} within {timeout_s} s")
             time.sleep(0.005)
-        request_id = time.time_ns()
-        writer.write(api_request(request_id, API_ID_RELEASE_MODE))
+        # Asked again every RELEASE_RETRY_S until answered: our reader matching the service's
+        # writer does not mean its writer has matched our reader yet (discovery runs each way
+        # on its own), and an answer written before that is lost; ReleaseMode is idempotent and
+        # unitree_sdk2's own examples repeat it. An answer to any of our requests counts.
+        asked: set[int] = set()
+        next_ask_s = time.monotonic()
         while time.monotonic() < deadline_s:
+            if time.monotonic() >= next_ask_s:
+                request_id = time.time_ns()
+                asked.add(request_id)
+                writer.write(api_request(request_id, API_ID_RELEASE_MODE))
+                next_ask_s += RELEASE_RETRY_S
             for response in reader.take(N=16):
                 if (isinstance(response, Response_)
-                        and response.header.identity.id == request_id):
+                        and response.header.identity.id in asked):
                     code = int(response.header.status.code)
-                    LOGGER.info("%s: ReleaseMode answered with code %d", self._name, code)
+                    LOGGER.info("%s: ReleaseMode answered with code %d (request %d of %d)",
+                                self._name, code, sorted(asked).index(
+                                    response.header.identity.id) + 1, len(asked))
                     return code
             time.sleep(0.002)
         raise DriverError(f"{self._name}: the motion switcher did not answer ReleaseMode "

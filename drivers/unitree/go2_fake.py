@@ -92,6 +92,9 @@ class FakeGo2(RealTimeFake):
         self._last_state_bytes: bytes | None = None
         self.last_command: JointCommand | None = None
         self.sport_mode_released = False
+        # fault injection: this many motion-switcher requests go unanswered (an answer lost on
+        # the way, as when the service's writer has not yet matched the client's reader)
+        self.unanswered_requests = 0
         self._runner = PeriodicThread("FakeGo2")
         self._states, self._commands = LowStateCodec(), LowCmdCodec()
         self._command_waitset = WaitSet(p)
@@ -181,6 +184,9 @@ class FakeGo2(RealTimeFake):
             identity = request.header.identity
             code = 0 if identity.api_id == API_ID_RELEASE_MODE else API_NOT_IMPLEMENTED_CODE
             self.sport_mode_released |= code == 0
+            if self.unanswered_requests > 0:
+                self.unanswered_requests -= 1
+                continue
             if not request.header.policy.noreply:
                 self._response_writer.write(api_response(request, code))
 

@@ -300,12 +300,13 @@ def test_damping_and_sport_mode_release(link):
     assert raw.take(N=4)[0].motor_cmd[0].q == pytest.approx(POS_STOP_F)
     assert fake.poll_commands()
     assert (fake.last_command.kp == 0).all() and (fake.last_command.kd == 3.0).all()
+    fake.unanswered_requests = 2  # two answers lost: the driver asks again until answered
     fake.start(rate_hz=500.0)
     try:
         assert driver.release_sport_mode(timeout_s=2.0) == 0
     finally:
         fake.stop()
-    assert fake.sport_mode_released
+    assert fake.sport_mode_released and fake.unanswered_requests == 0
     alone = Go2Driver("alone", DOMAIN_ID, topic_prefix=f"alone_{os.getpid()}")
     with pytest.raises(DriverError, match="no motion-switcher service"):
         alone.release_sport_mode(timeout_s=0.05)
