@@ -17,6 +17,7 @@ angular velocity in the base frame in v[3:6].
 
 from __future__ import annotations
 
+import math
 from typing import Protocol
 
 import numpy as np
@@ -60,25 +61,31 @@ class BaseVelocityEstimator:
         self.correction = np.zeros(3)
         self.legs_velocity = np.zeros(3)
         self._last_time_s: float | None = None
+        # Pinocchio's (q, v), refilled in place each tick: the base position and linear velocity
+        # stay zero (they do not change a foot's velocity relative to the base)
+        self._q = pin.neutral(self.model)
+        self._v = np.zeros(self.model.nv)
 
     def leg_odometry(self, measurement: LegMeasurement) -> np.ndarray | None:
         """Base velocity from the stance feet, or None when no foot is in contact."""
-        stance = np.flatnonzero(measurement.foot_contact)
-        if stance.size == 0:
+        stance = [i for i, contact in enumerate(measurement.foot_contact) if contact]
+        if not stance:
             return None
-        q = pin.neutral(self.model)
+        q, v = self._q, self._v
         w, x, y, z = measurement.quaternion_wxyz
-        q[3:7] = np.array([x, y, z, w]) / np.linalg.norm(measurement.quaternion_wxyz)
+        q[3:7] = (x, y, z, w)
+        q[3:7] /= math.sqrt(w * w + x * x + y * y + z * z)  # np.linalg.norm: ~15 µs more, cold
         q[self.q_indices] = measurement.position_rad
-        v = np.zeros(self.model.nv)
         v[3:6] = measurement.angular_velocity_in_body_rad_s
         v[self.v_indices] = measurement.velocity_rad_s
+        # the feet's velocities need the joints' placements and velocities only, not the
+        # frames' placements (getFrameVelocity composes them from the parent joint)
         pin.forwardKinematics(self.model, self.data, q, v)
-        pin.updateFramePlacements(self.model, self.data)
-        velocities = [pin.getFrameVelocity(self.model, self.data, self.feet[i],
-                                           pin.ReferenceFrame.LOCAL_WORLD_ALIGNED).linear
-                      for i in stance]
-        return -np.mean(velocities, axis=0)
+        world = pin.ReferenceFrame.LOCAL_WORLD_ALIGNED
+        total = np.zeros(3)
+        for i in stance:
+            total += pin.getFrameVelocity(self.model, self.data, self.feet[i], world).linear
+        return total / -len(stance)
 
     def update(self, time_s: float, measurement: LegMeasurement) -> np.ndarray:
         """The fused velocity at ``time_s`` [s]; ``measurement.linear_velocity_in_world_m_s``
