@@ -265,6 +265,15 @@ class LowStateCodec:
         self._tick = self.wire.view(self._buffer, "tick", 4)
         self._crc_view = self.wire.view(self._buffer, "crc", 4)
         self._crc = _WireCrc(self.wire, MessageLayout(LowState_, "c"), LOW_STATE_CRC_WORDS)
+        # decode: the float fields porter reads, gathered in one indexing from the wire bytes
+        # (after the CDR header) and widened to float64 once (exact), then split into slices
+        leaves = [self.wire.leaves[path] for _, path in self._FIELDS]
+        if any(leaf.dtype != np.dtype("<f4") for leaf in leaves):
+            raise TypeError("LowState_: every decoded field must be float32")
+        self._gather = np.concatenate([leaf.byte_index for leaf in leaves]) + 4
+        ends = np.cumsum([leaf.offsets.size for leaf in leaves])
+        self._slices = {name: slice(int(end - leaf.offsets.size), int(end))
+                        for (name, _), leaf, end in zip(self._FIELDS, leaves, ends, strict=True)}
 
     def encode_header(self) -> bytes:
         """The 4-byte CDR encapsulation header every sample starts with."""
@@ -289,8 +298,8 @@ class LowStateCodec:
     def decode(self, data: bytes) -> WireState:
         """The state in received bytes; ``ValueError`` for a wrong size or encoding."""
         _check(data, self.wire, "LowState_")
-        arrays = {name: np.array(self.wire.view(data, path, 4), dtype=float)
-                  for name, path in self._FIELDS}
+        values = np.frombuffer(data, np.uint8)[self._gather].view("<f4").astype(float)
+        arrays = {name: values[rows] for name, rows in self._slices.items()}
         return WireState(**arrays,
                          foot_force=np.array(self.wire.view(data, "foot_force", 4), np.int16),
                          tick_ms=int(self.wire.view(data, "tick", 4)[0]))
