@@ -142,19 +142,27 @@ def non_finite_fault(name: str, measurement: RobotMeasurement) -> str | None:
     return None
 
 
-def tilt_rad(quaternion_wxyz: np.ndarray) -> float:
-    """Angle [rad] between the base z-axis and the world z-axis (quaternion base -> world)."""
-    w, x, y, z = np.asarray(quaternion_wxyz, dtype=float) / np.linalg.norm(quaternion_wxyz)
+def _norm(quaternion_wxyz: np.ndarray) -> float:
+    # in Python floats: np.linalg.norm costs ~5 µs a call on the 500 Hz path (~1 µs this)
+    w, x, y, z = (float(v) for v in quaternion_wxyz)
+    return math.sqrt(w * w + x * x + y * y + z * z)
+
+
+def tilt_rad(quaternion_wxyz: np.ndarray, norm: float | None = None) -> float:
+    """Angle [rad] between the base z-axis and the world z-axis (quaternion base -> world);
+    ``norm``: the quaternion's norm when already at hand."""
+    norm = _norm(quaternion_wxyz) if norm is None else norm
+    x, y = float(quaternion_wxyz[1]) / norm, float(quaternion_wxyz[2]) / norm
     return math.acos(min(1.0, max(-1.0, 1.0 - 2.0 * (x * x + y * y))))
 
 
 def orientation_fault(name: str, measurement: RobotMeasurement,
                       settings: SupervisorSettings) -> str | None:
     """Not a rotation, or the trunk tilted beyond ``max_tilt_rad``."""
-    norm = float(np.linalg.norm(measurement.quaternion_wxyz))
-    if abs(norm - 1.0) > _QUATERNION_NORM_TOLERANCE:
+    norm = _norm(measurement.quaternion_wxyz)
+    if not abs(norm - 1.0) <= _QUATERNION_NORM_TOLERANCE:  # NaN too (caught before, anyway)
         return f"implausible base quaternion: {name} norm {norm:.3f} (expected 1)"
-    tilt = tilt_rad(measurement.quaternion_wxyz)
+    tilt = tilt_rad(measurement.quaternion_wxyz, norm)
     if tilt > settings.max_tilt_rad:
         return f"tilt: {name} trunk tilted {tilt:.3f} rad (max {settings.max_tilt_rad} rad)"
     return None
