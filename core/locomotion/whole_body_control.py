@@ -37,11 +37,7 @@ from core.locomotion.settings import WbcSettings
 from core.locomotion.state_conversion import StateConversion
 from core.locomotion.wbc_qp import FORCES, TORQUE_ROWS, WbcQpAssembly
 from core.model.conventions import JOINT_COUNT, LEG_NAMES
-from core.model.rotations import (
-    cross3,
-    euler_from_rotation,
-    rotation_from_quaternion_wxyz,
-)
+from core.model.rotations import rotation_from_quaternion_wxyz
 
 if TYPE_CHECKING:  # a protocol only; the NMPC package need not load
     from core.nmpc.nlp_solver import NlpCompiler
@@ -159,37 +155,28 @@ class WholeBodyController:
                                  compiler, *structural_patterns(model, self.foot_frame_ids))
         self._zero_acceleration = np.zeros(model.nv)
         self._conversion = StateConversion(self.com_offset_in_base_m, compiler)
+        # a second converter off the tick's path (``srb_state``, ``pinocchio_state``): its
+        # calls never overwrite the arrays ``observe`` hands to this tick's ``compute``
+        self._spare_conversion = StateConversion(self.com_offset_in_base_m, compiler)
         # (state, q, v, rotation) whose rigid-body terms the Pinocchio data holds (``observe``)
         self._observed: tuple[FloatingBaseState, np.ndarray, np.ndarray, np.ndarray] | None = None
 
     # --- state conversions ---------------------------------------------------------------
-    def pinocchio_state(self, state: FloatingBaseState, rotation: np.ndarray | None = None
-                        ) -> tuple[np.ndarray, np.ndarray]:
+    def pinocchio_state(self, state: FloatingBaseState) -> tuple[np.ndarray, np.ndarray]:
         """(q, v) in Pinocchio's convention (quaternion xyzw, base twist in the base frame);
-        ``rotation``: the state's base rotation when already at hand."""
-        w, x, y, z = state.quaternion_wxyz
-        rotation = state.rotation() if rotation is None else rotation
-        q = np.concatenate([state.position_base_in_world_m, (x, y, z, w),
-                            state.joint_position_rad])
-        v = np.concatenate([rotation.T @ state.linear_velocity_in_world_m_s,
-                            state.angular_velocity_in_body_rad_s, state.joint_velocity_rad_s])
-        return q, v
+        fresh arrays (``core.locomotion.state_conversion``)."""
+        q, v, _, _ = self._spare_conversion(state)
+        return q.copy(), v.copy()
 
-    def srb_state(self, state: FloatingBaseState, rotation: np.ndarray | None = None
-                  ) -> np.ndarray:
+    def srb_state(self, state: FloatingBaseState) -> np.ndarray:
         """The NMPC's SRB state (p, v, Theta, omega) of this robot: CoM at the standing offset
-        from the base, omega in world."""
-        rotation = state.rotation() if rotation is None else rotation
-        offset = rotation @ self.com_offset_in_base_m
-        omega = rotation @ state.angular_velocity_in_body_rad_s
-        return np.concatenate([state.position_base_in_world_m + offset,
-                               state.linear_velocity_in_world_m_s + cross3(omega, offset),
-                               euler_from_rotation(rotation), omega])
+        from the base, omega in world; a fresh array."""
+        return self._spare_conversion(state)[3]
 
     def foot_positions(self, state: FloatingBaseState) -> np.ndarray:
         """(4, 3) foot contact points [m] in world (foot frame minus the foot radius in z)."""
         self._observed = None  # the Pinocchio data no longer holds an observed state's terms
-        q, _ = self.pinocchio_state(state)
+        q, _, _, _ = self._spare_conversion(state)
         pin.framesForwardKinematics(self.model, self.data, q)
         return self._feet()
 
@@ -220,8 +207,7 @@ class WholeBodyController:
         if observed is not None and observed[0] is state:
             _, q, v, rotation = observed
         else:
-            rotation = state.rotation()
-            q, v = self.pinocchio_state(state, rotation)
+            q, v, rotation, _ = self._conversion(state)
             pin.computeAllTerms(model, data, q, v)
             pin.updateFramePlacements(model, data)  # the swing feet's placements (oMf)
         views = self._qp.views

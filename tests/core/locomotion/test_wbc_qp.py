@@ -32,7 +32,7 @@ def _reference(wbc: WholeBodyController, state: FloatingBaseState, target: WbcTa
     s, model = wbc.settings, wbc.model
     data = model.createData()
     rotation = state.rotation()
-    q, v = wbc.pinocchio_state(state, rotation)
+    q, v = wbc.pinocchio_state(state)
     pin.computeAllTerms(model, data, q, v)
     pin.updateFramePlacements(model, data)
     mass = np.triu(data.M) + np.triu(data.M, 1).T

@@ -90,7 +90,8 @@ def _random_state(wbc: WholeBodyController, rng: np.random.Generator) -> Floatin
                                     (0, 0, 0, 0)])
 def test_one_pinocchio_pass_per_tick_gives_the_same_torques(stance: tuple[int, ...]) -> None:
     """``observe`` (SRB state and feet in the pass ``compute`` reuses) changes no figure; a
-    different state object, or a Pinocchio call in between, is computed afresh."""
+    different state object, or a Pinocchio call in between, is computed afresh; a conversion
+    of another state in between changes nothing."""
     rng = np.random.default_rng(sum(stance))
     shared, fresh = _controller("go2", (0.0, 0.0, 0.1)), _controller("go2", (0.0, 0.0, 0.1))
     weight = srb_parameters("go2").mass_kg * 9.81
@@ -113,6 +114,12 @@ def test_one_pinocchio_pass_per_tick_gives_the_same_torques(stance: tuple[int, .
         shared.observe(other)
         np.testing.assert_allclose(shared.compute(state, target).torque_nm, alone.torque_nm,
                                    rtol=0, atol=1e-9)
+        # the NMPC's inputs or a reset between observe and compute (another state's SRB state,
+        # (q, v)) leave the observed tick's arrays alone: the same torques as before
+        shared.observe(state)
+        shared.srb_state(other)
+        shared.pinocchio_state(other)
+        np.testing.assert_array_equal(shared.compute(state, target).torque_nm, reused.torque_nm)
 
 
 def _coupling_force(wbc: WholeBodyController, wrench: np.ndarray) -> np.ndarray:

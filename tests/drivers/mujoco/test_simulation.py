@@ -178,6 +178,26 @@ def test_no_contact_no_foot_force(scene):
     assert not measurement.foot_contact.any()
 
 
+def test_foot_forces_follow_steps_and_direct_changes(scene):
+    """The feet's forces, computed once per physics step for the whole team, are those of
+    the current state: after a step, and after a direct change to ``data`` and ``forward``."""
+    simulation = _standing(scene)
+    simulation.step(50)
+    drivers = [simulation.robot_driver(r.name) for r in scene.robots]
+    loaded = [driver.read().foot_normal_force_n for driver in drivers]
+    assert all((forces > 0.0).any() for forces in loaded)
+    loaded[0][:] = -1.0  # a caller's change stays with the caller
+    assert (drivers[0].read().foot_normal_force_n >= 0.0).all()
+    for robot in scene.robots:  # every robot lifted 1 m: no contact anywhere
+        simulation.data.qpos[robot.base_qpos_address + 2] += 1.0
+    simulation.data.qpos[scene.payload_qpos_address + 2] += 1.0
+    simulation.forward()
+    for robot, driver in zip(scene.robots, drivers, strict=True):
+        np.testing.assert_array_equal(driver.read().foot_normal_force_n, np.zeros(4))
+        np.testing.assert_array_equal(_reference_foot_normal_forces(simulation, robot),
+                                      np.zeros(4))
+
+
 def test_measurement_arrays_are_snapshots(scene):
     simulation = _standing(scene)
     driver = simulation.robot_driver(scene.robots[0].name)

@@ -8,7 +8,6 @@ import socket
 import struct
 import time
 
-import mujoco
 import numpy as np
 import pytest
 
@@ -112,7 +111,7 @@ def test_state_round_trip(link, raw):
     data.qpos[robot.base_qpos_address + 3:robot.base_qpos_address + 7] = \
         quaternion / np.linalg.norm(quaternion)
     data.ctrl[robot.actuator_ids] = 0.5 * np.arange(1, 13)
-    mujoco.mj_forward(simulation.model, data)
+    simulation.forward()
     truth = simulation.robot_driver(ROBOT).read()
     fake.peer_address = raw.getsockname()  # first the raw datagram: Unitree conventions
     fake.publish_state()

@@ -8,7 +8,6 @@ import itertools
 import os
 import time
 
-import mujoco
 import numpy as np
 import pytest
 from cyclonedds.pub import DataWriter
@@ -89,7 +88,7 @@ def _distinctive_state(simulation: TeamSimulation) -> None:
     data.qpos[a + 3:a + 7] = quaternion / np.linalg.norm(quaternion)
     data.qvel[robot.base_qvel_address + 3:robot.base_qvel_address + 6] = (0.3, -0.2, 0.1)
     data.ctrl[robot.actuator_ids] = 0.5 * np.arange(1, 13)
-    mujoco.mj_forward(simulation.model, data)
+    simulation.forward()
 
 
 def test_driver_is_a_robot_driver(link):
