@@ -28,9 +28,14 @@ from deploy.reports.table import Column, render_table
 RUN_TIMEOUT_S = 900.0
 
 
-def scaled_config(config: Path | str, time_scale: float, directory: Path) -> Path:
+CONFIGURED = "configured"  # a loop priority left as the config has it
+
+
+def scaled_config(config: Path | str, time_scale: float, directory: Path,
+                  loop_priority: int | None | str = CONFIGURED) -> Path:
     """A copy of deploy config ``config`` (path or shipped name) in ``directory`` with
-    ``sim.time_scale`` = ``time_scale``; a relative scenario file path is made absolute."""
+    ``sim.time_scale`` = ``time_scale`` and, unless ``CONFIGURED``, ``rates.loop_priority`` =
+    ``loop_priority``; a relative scenario file path is made absolute."""
     source = config_path(config)
     data = yaml.safe_load(source.read_text())
     scenario = Path(str(data.get("scenario", "")))
@@ -38,7 +43,9 @@ def scaled_config(config: Path | str, time_scale: float, directory: Path) -> Pat
             and (source.parent / scenario).exists():
         data["scenario"] = str((source.parent / scenario).resolve())
     data["sim"] = {**(data.get("sim") or {}), "time_scale": time_scale}
-    path = directory / f"{source.stem}-x{time_scale:g}.yaml"
+    if loop_priority != CONFIGURED:
+        data["rates"] = {**(data.get("rates") or {}), "loop_priority": loop_priority}
+    path = directory / f"{source.stem}-x{time_scale:g}-p{loop_priority}.yaml"
     path.write_text(yaml.safe_dump(data, sort_keys=False))
     return path
 
@@ -69,6 +76,7 @@ def deploy_row(summary: dict[str, Any]) -> dict[str, Any]:
                else f"safe stop: {summary['safe_stop']}" if summary["safe_stop"]
                else summary["result"])
     return {"config": Path(str(summary["config"])).stem, "time_scale": summary["time_scale"],
+            "loop_priority": summary.get("loop_priority"),
             "outcome": outcome, "exit_code": summary.get("exit_code"),
             "run_s": summary["run_s"], "wbc": wbc, "nmpc": nmpc,
             "wbc_rate_ratio": ratio(wbc), "nmpc_rate_ratio": ratio(nmpc),
@@ -80,17 +88,20 @@ def deploy_row(summary: dict[str, Any]) -> dict[str, Any]:
             "gc_pauses": summary.get("gc_pauses", {})}
 
 
-def run_bench(config: str, time_scales: list[float], runs: int,
-              duration_s: float) -> list[dict[str, Any]]:
-    """Rows for every time scale x run, in that order."""
+def run_bench(config: str, time_scales: list[float], runs: int, duration_s: float,
+              loop_priorities: list[int | None | str] | None = None) -> list[dict[str, Any]]:
+    """Rows for every time scale x loop priority (default: the config's) x run, in that
+    order; runs of one scale alternate the priorities (pairs of one sitting)."""
     rows = []
     with tempfile.TemporaryDirectory() as directory:
         for time_scale in time_scales:
-            scaled = scaled_config(config, time_scale, Path(directory))
+            scaled = [scaled_config(config, time_scale, Path(directory), priority)
+                      for priority in (loop_priorities or [CONFIGURED])]
             for _ in range(runs):
-                row = deploy_row(run_once(scaled, duration_s))
-                row["config"] = config_path(config).stem  # not the scaled copy's name
-                rows.append(row)
+                for path in scaled:
+                    row = deploy_row(run_once(path, duration_s))
+                    row["config"] = config_path(config).stem  # not the scaled copy's name
+                    rows.append(row)
     return rows
 
 
@@ -103,7 +114,9 @@ def format_table(rows: list[dict[str, Any]]) -> str:
     for row in rows:
         wbc, nmpc = row["wbc"], row["nmpc"]
         cells.append([
-            row["config"], f"{row['time_scale']:.2f}", _number(row["run_s"], 1),
+            row["config"], f"{row['time_scale']:.2f}",
+            "-" if row.get("loop_priority") is None else str(row["loop_priority"]),
+            _number(row["run_s"], 1),
             _number(wbc.get("rate_hz"), 0), _number(row["wbc_rate_ratio"], 2),
             _number(wbc.get("jitter_p50_ms"), 3), _number(wbc.get("jitter_p99_ms"), 3),
             _number(wbc.get("busy_p50_ms"), 3), _number(nmpc.get("rate_hz"), 1),
@@ -112,11 +125,12 @@ def format_table(rows: list[dict[str, Any]]) -> str:
             _number(nmpc.get("busy_p99_ms"), 1), str(row["nmpc_deadline_misses"]),
             row["outcome"]])
     numbers = [Column(name, "right") for name in (
-        "scale", "run s", "wbc Hz", "ratio", "jit p50", "jit p99", "busy p50", "nmpc Hz",
+        "scale", "prio", "run s", "wbc Hz", "ratio", "jit p50", "jit p99", "busy p50", "nmpc Hz",
         "ratio", "jit p50", "jit p99", "upd p50", "upd p99", "miss")]
     return render_table(["config", *numbers, "outcome"], cells, [
-        "ms and Hz in simulated time; ratio = achieved / nominal rate; jit = |period - "
-        "nominal|; busy = work per WBC tick; upd = NMPC update time; miss = updates over 1/60 s"])
+        "ms and Hz in simulated time; prio = the loop thread's SCHED_FIFO priority (-: normal "
+        "scheduling); ratio = achieved / nominal rate; jit = |period - nominal|; busy = work "
+        "per WBC tick; upd = NMPC update time; miss = updates over 1/60 s"])
 
 
 STAGES = ("read", "estimate", "nmpc", "check", "control", "filter", "send", "record", "total")

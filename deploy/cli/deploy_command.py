@@ -32,6 +32,7 @@ from deploy.nmpc_runtime.nmpc_thread import NmpcThread
 from deploy.recording.flight_recorder import FlightRecorder
 from deploy.recording.log_format import DEPLOY_CONFIG_ATTACHMENT
 from deploy.recording.run_record import default_log_path, open_run_recorder
+from deploy.runtime import realtime
 from deploy.runtime.clock import PacedClock
 from deploy.runtime.codegen_cache import CompiledCodeCache
 from deploy.runtime.controller import TeamController
@@ -85,6 +86,8 @@ def run_deploy(args: argparse.Namespace) -> int:
     say = lambda text: print(f"porter deploy: {text}", file=sys.stderr, flush=True)  # noqa: E731
     say(f"{config_name(args.config)}: scenario {scenario.name!r}, robots "
         f"{', '.join(config.robots)}, backend {args.backend}, run {duration_s:g} s")
+    # probed before any process or thread exists (they would inherit the policy)
+    loop_priority = usable_loop_priority(config, args.backend, say)
     in_process = config.nmpc.runner == "process"
     control = TeamController(scenario, CompiledCodeCache(), tick_s=1.0 / config.rates.wbc_hz,
                              build_mpc=not in_process, nmpc_shares_loop=not in_process)
@@ -135,13 +138,14 @@ def run_deploy(args: argparse.Namespace) -> int:
             sleep = faults.sleep(sleep)
         loop = deploy_loop(config, control, links, recorder, OperatorPrompt(args.yes), stop,
                            duration_s, clock, sleep, runner, watchdog)
-        with stop.installed():
+        with stop.installed(), realtime.applied(loop_priority):
             loop.run(f"start: porter deploy, scenario {scenario.name}")
     finally:
         sys.setswitchinterval(switch_interval_s)
         summary = None
         if loop is not None:
             summary = deploy_summary(loop, args, backend)
+            summary["loop_priority"] = loop_priority
             summary["watchdog"] = {"enabled": watchdog is not None,
                                    "tripped": loop.watchdog_tripped}
         if watchdog is not None:
@@ -165,6 +169,20 @@ def run_deploy(args: argparse.Namespace) -> int:
         say(f"wrote {args.json}")
     say(f"{loop.ended_by}; final state {loop.supervisor.state.name}")
     return exit_code(loop, stop)
+
+
+def usable_loop_priority(config: DeployConfig, backend: str, say: Callable[[str], None]
+                         ) -> int | None:
+    """``rates.loop_priority`` if this thread may take it; else on robots (``hw``) a
+    ``ConfigError`` (the loop's timing rests on it), in simulation None and a warning."""
+    priority = config.rates.loop_priority
+    problem = realtime.check(priority)
+    if problem is None:
+        return priority
+    if backend == "hw":
+        raise ConfigError(problem)
+    say(f"{problem} (simulation: the loop runs at normal priority)")
+    return None
 
 
 def deploy_loop(config: DeployConfig, control: TeamController, links: TeamLinks,

@@ -30,6 +30,15 @@ def positive_number(text: str) -> float:
     return value
 
 
+def loop_priority(text: str) -> int | None:
+    """A SCHED_FIFO priority 1-99, or ``none`` (normal scheduling)."""
+    if text.lower() in ("none", "null"):
+        return None
+    if not (text.isdigit() and 1 <= int(text) <= 99):
+        raise argparse.ArgumentTypeError(f"must be 1-99 or none, got {text!r}")
+    return int(text)
+
+
 def count(text: str) -> int:
     """An argument that must be a whole number >= 1 (runs, samples, agents)."""
     try:
@@ -155,7 +164,8 @@ def _bench_deploy(args: argparse.Namespace) -> int:
     print(f"porter bench deploy: {args.config} on the sim backend, time scales "
           f"{', '.join(f'{s:g}' for s in args.time_scales)}, {args.runs} run(s) each, "
           f"{args.duration:g} s running (plus pre-flight, stand-up and sit-down)")
-    rows = run_bench(args.config, args.time_scales, args.runs, args.duration)
+    rows = run_bench(args.config, args.time_scales, args.runs, args.duration,
+                     args.loop_priority)
     print(format_table(rows))
     print()
     print(format_budget(rows))
@@ -294,6 +304,9 @@ def build_parser() -> argparse.ArgumentParser:
     bench_dep.add_argument("--time-scales", type=positive_number, nargs="+", default=[0.1, 1.0],
                            help="sim.time_scale values (default 0.1 1.0)")
     bench_dep.add_argument("--runs", type=count, default=1, help="runs per time scale")
+    bench_dep.add_argument("--loop-priority", type=loop_priority, nargs="+", default=None,
+                           help="rates.loop_priority values to compare, alternating: 1-99 or "
+                                "none (default: the config's own)")
     bench_dep.add_argument("--duration", type=positive_number, default=3.0,
                            help="seconds running once armed (simulated)")
     bench_dep.add_argument("--json", help="also write the rows as JSON")

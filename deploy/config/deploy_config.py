@@ -114,6 +114,10 @@ class RatesConfig(StrictModel):
     nmpc_hz: float = Field(60.0, ge=10.0, le=200.0)
     max_plan_age_s: float = Field(0.25, gt=0, le=1.0)  # older active plan while running: stop
     max_armed_s: float = Field(2.0, gt=0, le=30.0)  # ARMED this long with no first plan: stop
+    # SCHED_FIFO priority of the loop's thread while it runs (deploy.runtime.realtime); null:
+    # normal scheduling. On robots a priority that cannot be set is an error; in simulation
+    # the loop then runs at normal priority with a warning.
+    loop_priority: int | None = Field(None, ge=1, le=99)
 
 
 class NmpcRunConfig(StrictModel):

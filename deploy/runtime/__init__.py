@@ -1,4 +1,5 @@
-"""The control loop: time, the team controller, links, process names, CPU and GC metering.
+"""The control loop: time, real-time priority, the team controller, links, process names, CPU and
+GC metering.
 
 Names load on first use (``core.lazy_exports``), so importing the package imports nothing
 else.
@@ -18,6 +19,7 @@ _SOURCES = {
     "deploy.runtime.loop": ["ControlLoop", "SATURATION_MARGIN"],
     "deploy.runtime.loop_interfaces": ["Heartbeat", "LoopHooks", "LoopSettings"],
     "deploy.runtime.process_names": ["COMM_LENGTH", "name_this_process"],
+    "deploy.runtime.realtime": ["RealtimePriorityError"],
     "deploy.runtime.cpu_meter": ["RunningCpu", "cpu_seconds"],
     "deploy.runtime.gc_pauses": ["GcPauses", "freeze_startup_objects"],
     "deploy.runtime.run_metrics": ["RunMetrics"],
@@ -27,9 +29,10 @@ _SOURCES = {
 }
 __all__ = ["COMM_LENGTH", "CompilationError", "CompiledCodeCache", "ControlLoop", "GcPauses",
            "Heartbeat", "LockstepClock", "LoopClock", "LoopHooks", "LoopSettings", "MocapTracker",
-           "NmpcDecision", "PacedClock", "Pacer", "PeriodStats", "RobotControl", "RunMetrics",
-           "RunningCpu", "build_team_mpc", "cpu_seconds", "name_this_process",
-           "SATURATION_MARGIN", "SimRun", "StopRequest", "TeamController", "TeamLinks",
+           "NmpcDecision", "PacedClock", "Pacer", "PeriodStats", "RealtimePriorityError",
+           "RobotControl", "RunMetrics", "RunningCpu", "build_team_mpc", "cpu_seconds",
+           "name_this_process", "SATURATION_MARGIN", "SimRun", "StopRequest", "TeamController",
+           "TeamLinks",
            "WBC_DECIMATION", "WbcStep", "default_cache_directory", "finite_or_none",
            "freeze_startup_objects", "measurement_state", "mocap_state", "open_links"]
 __getattr__ = lazy_exports(__name__, _SOURCES)

@@ -25,6 +25,7 @@ from deploy.config.deploy_config import CONFIG_DIR, load_deploy_config
 from deploy.config.files import ConfigError
 from deploy.config.scenario import load_scenario
 from deploy.recording.log_reader import LogFile
+from deploy.runtime import realtime
 from deploy.runtime.blas_kernels import GENERIC, cpu_target, host_cpu_flags
 from deploy.runtime.timing import Pacer, PeriodStats
 from deploy.safety.posture import PostureMove, sitting_posture, standing_posture
@@ -62,6 +63,10 @@ def test_deploy_on_the_sim_backend_stands_walks_carries_and_sits_down(
     assert summary is not None and summary["final_state"] == "DONE"
     assert summary["safe_stop"] is None
     assert summary["watchdog"] == {"enabled": True, "tripped": False}
+    # the shipped config's SCHED_FIFO priority where this machine allows it (else a warning)
+    allowed = realtime.check(50) is None
+    assert summary["loop_priority"] == (50 if allowed else None)
+    assert ("rates.loop_priority: cannot run the loop" in captured.err) is not allowed
     assert summary["wbc_failed_ticks"] == 0
     assert summary["run_s"] == pytest.approx(load_deploy_config(TWO_GO2)[1].duration_s, abs=0.1)
     # margin flags are counted and logged, never counted as failed solves
@@ -308,6 +313,8 @@ def test_the_nmpc_executor_overrides_the_scenario_default_and_conflicts_are_name
      "safety.max_consecutive_solver_failures"),
     ("safety", {"mocap_timeout_s": float("inf")}, "safety.mocap_timeout_s"),
     ("rates", {"max_plan_age_s": float("nan")}, "rates.max_plan_age_s"),
+    ("rates", {"loop_priority": 0}, "rates.loop_priority"),
+    ("rates", {"loop_priority": 100}, "rates.loop_priority"),
     ("mocap", {"stale_timeout_s": 30.0}, "mocap.stale_timeout_s"),
     ("posture", {"kd": 0.0}, "posture.kd"),
     ("safety", {"deadline_overrun_budget": 200}, "deadline_overrun_budget 200 can never"),
@@ -354,6 +361,26 @@ def test_bench_deploy_scales_a_copy_of_the_config(tmp_path: Path) -> None:
     assert config.sim.time_scale == 0.35
     assert config.robots == load_deploy_config(original)[0].robots
     assert scenario == load_deploy_config(original)[1]
+    assert config.rates == load_deploy_config(original)[0].rates  # the config's own priority
+    for priority in (None, 7):  # --loop-priority none / 7: the copy's only other change
+        changed, _ = load_deploy_config(scaled_config(original, 0.35, copies, priority))
+        assert changed.rates.loop_priority == priority
+        assert changed.sim == config.sim and changed.robots == config.robots
+
+
+@pytest.mark.parametrize(("text", "ok"), [("none", True), ("50", True), ("0", False),
+                                          ("100", False), ("high", False)])
+def test_bench_deploy_loop_priorities_are_validated(text: str, ok: bool,
+                                                    capsys: pytest.CaptureFixture[str]) -> None:
+    from deploy.cli.porter import build_parser
+    parser = build_parser()
+    if ok:
+        args = parser.parse_args(["bench", "deploy", "--loop-priority", text])
+        assert args.loop_priority == [None if text == "none" else int(text)]
+    else:
+        with pytest.raises(SystemExit):
+            parser.parse_args(["bench", "deploy", "--loop-priority", text])
+        assert "argument --loop-priority" in capsys.readouterr().err
 
 
 def test_no_record_is_refused_on_robots(capsys: pytest.CaptureFixture[str]) -> None:

@@ -1,0 +1,108 @@
+"""The loop thread's real-time priority: set and restored where allowed, refused with the
+setting's name where not (a child process without the privilege), and the deploy command's
+policy (robots: an error; simulation: a warning and normal scheduling)."""
+
+from __future__ import annotations
+
+import os
+import subprocess
+import sys
+import textwrap
+
+import pytest
+
+from deploy.runtime import realtime
+
+# A child process losing the privilege (``drop()``, after its imports: nobody may not read
+# the interpreter's files): root becomes nobody; then no real-time priority is allowed at all
+# (RLIMIT_RTPRIO 0), whoever runs the tests.
+_UNPRIVILEGED = textwrap.dedent("""
+    import os, resource
+    def drop():
+        if os.geteuid() == 0:
+            os.setgid(65534)
+            os.setuid(65534)
+        resource.setrlimit(resource.RLIMIT_RTPRIO, (0, 0))
+""")
+
+
+def _child(code: str) -> subprocess.CompletedProcess[str]:
+    return subprocess.run([sys.executable, "-c", code], capture_output=True, text=True,
+                          timeout=60, cwd=os.getcwd(),
+                          env={**os.environ, "PYTHONPATH": os.getcwd()}, check=False)
+
+
+def test_nothing_changes_without_a_priority() -> None:
+    before = os.sched_getscheduler(0), os.sched_getparam(0).sched_priority
+    assert realtime.check(None) is None
+    with realtime.applied(None):
+        assert (os.sched_getscheduler(0), os.sched_getparam(0).sched_priority) == before
+
+
+def test_the_priority_holds_inside_and_the_old_policy_returns_after() -> None:
+    result = _child(textwrap.dedent("""
+        import os
+        from deploy.runtime import realtime
+        problem = realtime.check(20)
+        assert os.sched_getscheduler(0) == os.SCHED_OTHER  # the probe restores
+        if problem is None:
+            with realtime.applied(20):
+                assert os.sched_getscheduler(0) == os.SCHED_FIFO
+                assert os.sched_getparam(0).sched_priority == 20
+            print("applied")
+        else:
+            try:
+                with realtime.applied(20):
+                    raise SystemExit("ran without the priority")
+            except realtime.RealtimePriorityError as error:
+                assert str(error) == problem
+            print("refused")
+        assert os.sched_getscheduler(0) == os.SCHED_OTHER
+        assert os.sched_getparam(0).sched_priority == 0
+    """))
+    assert result.returncode == 0, result.stderr
+    assert result.stdout.strip() in ("applied", "refused")
+
+
+def test_without_the_privilege_it_is_refused_naming_the_setting() -> None:
+    result = _child(_UNPRIVILEGED + textwrap.dedent("""
+        import os
+        from deploy.runtime import realtime
+        drop()
+        problem = realtime.check(50)
+        assert problem is not None
+        print(problem)
+        try:
+            with realtime.applied(50):
+                raise SystemExit("ran without the priority")
+        except realtime.RealtimePriorityError as error:
+            assert str(error) == problem
+        assert os.sched_getscheduler(0) == os.SCHED_OTHER
+    """))
+    assert result.returncode == 0, result.stderr
+    assert "rates.loop_priority: cannot run the loop at SCHED_FIFO priority 50" in result.stdout
+    assert "rates.loop_priority: null" in result.stdout
+
+
+@pytest.mark.parametrize("backend", ["hw", "sim"])
+def test_deploy_refuses_on_robots_and_warns_in_simulation(backend: str) -> None:
+    result = _child(_UNPRIVILEGED + textwrap.dedent(f"""
+        from deploy.cli.deploy_command import usable_loop_priority
+        from deploy.config.deploy_config import load_deploy_config
+        from deploy.config.files import ConfigError
+        config, _ = load_deploy_config("two_go2")
+        assert config.rates.loop_priority == 50  # the shipped config asks for it
+        drop()
+        said = []
+        try:
+            print("priority", usable_loop_priority(config, {backend!r}, said.append))
+        except ConfigError as error:
+            print("error", error)
+        print("said", said)
+    """))
+    assert result.returncode == 0, result.stderr
+    if backend == "hw":
+        assert result.stdout.startswith("error rates.loop_priority: cannot run the loop")
+    else:
+        assert result.stdout.startswith("priority None")
+        assert "(simulation: the loop runs at normal priority)" in result.stdout
