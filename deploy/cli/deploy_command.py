@@ -87,12 +87,13 @@ def run_deploy(args: argparse.Namespace) -> int:
     say(f"{config_name(args.config)}: scenario {scenario.name!r}, robots "
         f"{', '.join(config.robots)}, backend {args.backend}, run {duration_s:g} s")
     # probed before any process or thread exists (they would inherit the policy)
-    loop_priority = usable_loop_priority(config, args.backend, say)
+    loop_priority, nmpc_nice = usable_priorities(config, args.backend, say)
     in_process = config.nmpc.runner == "process"
     control = TeamController(scenario, CompiledCodeCache(), tick_s=1.0 / config.rates.wbc_hz,
                              build_mpc=not in_process, nmpc_shares_loop=not in_process)
     # Built before the world starts: a cold cache compiles the NLPs for minutes.
-    process = (NmpcProcess(scenario, control.settings, control.cache) if in_process else None)
+    process = (NmpcProcess(scenario, control.settings, control.cache, nice=nmpc_nice)
+               if in_process else None)
     runner: NmpcRunner | None = process
     backend: SimBackend | None = None
     recorder: FlightRecorder | None = None
@@ -146,6 +147,7 @@ def run_deploy(args: argparse.Namespace) -> int:
         if loop is not None:
             summary = deploy_summary(loop, args, backend)
             summary["loop_priority"] = loop_priority
+            summary["nmpc_nice"] = nmpc_nice
             summary["watchdog"] = {"enabled": watchdog is not None,
                                    "tripped": loop.watchdog_tripped}
         if watchdog is not None:
@@ -171,18 +173,24 @@ def run_deploy(args: argparse.Namespace) -> int:
     return exit_code(loop, stop)
 
 
-def usable_loop_priority(config: DeployConfig, backend: str, say: Callable[[str], None]
-                         ) -> int | None:
-    """``rates.loop_priority`` if this thread may take it; else on robots (``hw``) a
-    ``ConfigError`` (the loop's timing rests on it), in simulation None and a warning."""
-    priority = config.rates.loop_priority
-    problem = realtime.check(priority)
-    if problem is None:
-        return priority
-    if backend == "hw":
-        raise ConfigError(problem)
-    say(f"{problem} (simulation: the loop runs at normal priority)")
-    return None
+def usable_priorities(config: DeployConfig, backend: str, say: Callable[[str], None]
+                      ) -> tuple[int | None, int]:
+    """(``rates.loop_priority``, ``nmpc.nice``) as far as this process may take them; one it
+    may not is on robots (``hw``) a ``ConfigError`` (the loop's timing rests on it), in
+    simulation a warning, and normal scheduling instead (None, 0)."""
+    priority, nice = config.rates.loop_priority, config.nmpc.nice
+    problems = {"priority": realtime.check(priority), "nice": realtime.check_nice(nice)}
+    for which, problem in problems.items():
+        if problem is None:
+            continue
+        if backend == "hw":
+            raise ConfigError(problem)
+        say(f"{problem} (simulation: normal scheduling instead)")
+        if which == "priority":
+            priority = None
+        else:
+            nice = 0
+    return priority, nice
 
 
 def deploy_loop(config: DeployConfig, control: TeamController, links: TeamLinks,

@@ -129,6 +129,10 @@ class NmpcRunConfig(StrictModel):
 
     runner: Literal["process", "thread"] = "process"
     executor: Literal["serial", "process", "zenoh"] | None = None
+    # nice value of the NMPC's process (runner: process; deploy.runtime.realtime): below 0 it
+    # gets the CPU before normal-priority processes. A value it cannot take is an error on
+    # robots, a warning (and 0) in simulation.
+    nice: int = Field(0, ge=-20, le=19)
 
 
 class PreflightConfig(StrictModel):
@@ -325,6 +329,9 @@ def load_deploy_config(path_or_name: Path | str) -> tuple[DeployConfig, Scenario
                               f"controller.executor: {controller.executor!r}; set one of them")
         scenario = scenario.model_copy(update={"controller": controller.model_copy(
             update={"executor": executor})})
+    if config.nmpc.nice != 0 and config.nmpc.runner == "thread":
+        raise ConfigError(f"{path}: nmpc.nice: {config.nmpc.nice} needs nmpc.runner: process "
+                          "(a thread runs in the loop's process); set one of them")
     team = [agent.name for agent in scenario.team]
     if sorted(config.robots) != sorted(team):
         missing = [name for name in team if name not in config.robots]

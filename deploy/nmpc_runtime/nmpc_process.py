@@ -28,6 +28,7 @@ from core.nmpc.mpc_inputs import MpcInputs
 from core.nmpc.settings import MpcSettings
 from deploy.config.scenario import Scenario
 from deploy.nmpc_runtime.nmpc_thread import NmpcResult
+from deploy.runtime import realtime
 from deploy.runtime.codegen_cache import CompiledCodeCache
 from deploy.runtime.controller import NmpcDecision, build_team_mpc
 from deploy.runtime.gc_pauses import freeze_startup_objects
@@ -41,11 +42,13 @@ class NmpcProcessError(RuntimeError):
 
 
 def _serve(scenario: Scenario, settings: MpcSettings, cache: CompiledCodeCache,
-           connection: Connection) -> None:
+           connection: Connection, nice: int = 0) -> None:
     # Ctrl-C at the terminal reaches the whole process group: the loop sits the team down,
     # and the NMPC (its ADMM workers inherit the ignored signal) lives until it is told.
     signal.signal(signal.SIGINT, signal.SIG_IGN)
     name_this_process("porter-nmpc")
+    if nice != 0:  # before the ADMM workers start: they inherit it
+        realtime.set_nice(nice)
     controller = build_team_mpc(scenario, settings, cache)
     freeze_startup_objects()  # no full collection of the NMPC's objects during updates
     connection.send("ready")
@@ -77,18 +80,18 @@ class NmpcProcess:
     ``clock`` is the loop's clock (simulated seconds under a time scale); an update's
     ``wall_s`` is converted to it from the system's monotonic clock, which both processes
     share. Construction blocks until the NMPC is built (``start_timeout_s``: a cold cache
-    compiles for minutes).
+    compiles for minutes). ``nice``: the process's nice value (``deploy.runtime.realtime``).
     """
 
     def __init__(self, scenario: Scenario, settings: MpcSettings, cache: CompiledCodeCache,
                  clock: Callable[[], float] = time.monotonic,
-                 start_timeout_s: float = 900.0) -> None:
+                 start_timeout_s: float = 900.0, nice: int = 0) -> None:
         self.clock = clock
         context = mp.get_context("spawn")
         self._connection, child = context.Pipe()
         # Not a daemon: daemonic processes may not start the ADMM workers. It ends when told,
         # or when its pipe closes (this process gone).
-        self._process = context.Process(target=_serve, args=(scenario, settings, cache, child),
+        self._process = context.Process(target=_serve, args=(scenario, settings, cache, child, nice),
                                         name="porter-nmpc")
         self._process.start()
         child.close()

@@ -67,6 +67,8 @@ def test_deploy_on_the_sim_backend_stands_walks_carries_and_sits_down(
     allowed = realtime.check(50) is None
     assert summary["loop_priority"] == (50 if allowed else None)
     assert ("rates.loop_priority: cannot run the loop" in captured.err) is not allowed
+    nice_allowed = realtime.check_nice(-10) is None
+    assert summary["nmpc_nice"] == (-10 if nice_allowed else 0)
     assert summary["wbc_failed_ticks"] == 0
     assert summary["run_s"] == pytest.approx(load_deploy_config(TWO_GO2)[1].duration_s, abs=0.1)
     # margin flags are counted and logged, never counted as failed solves
@@ -304,6 +306,10 @@ def test_the_nmpc_executor_overrides_the_scenario_default_and_conflicts_are_name
     path.write_text(yaml.safe_dump(data))
     with pytest.raises(ConfigError, match="nmpc.runner"):
         load_deploy_config(path)
+    data["nmpc"] = {"runner": "thread", "nice": -10}  # a thread has the loop's process
+    path.write_text(yaml.safe_dump(data))
+    with pytest.raises(ConfigError, match="nmpc.nice: -10 needs nmpc.runner: process"):
+        load_deploy_config(path)
 
 
 @pytest.mark.parametrize(("section", "values", "field"), [
@@ -315,6 +321,7 @@ def test_the_nmpc_executor_overrides_the_scenario_default_and_conflicts_are_name
     ("rates", {"max_plan_age_s": float("nan")}, "rates.max_plan_age_s"),
     ("rates", {"loop_priority": 0}, "rates.loop_priority"),
     ("rates", {"loop_priority": 100}, "rates.loop_priority"),
+    ("nmpc", {"nice": -21}, "nmpc.nice"),
     ("mocap", {"stale_timeout_s": 30.0}, "mocap.stale_timeout_s"),
     ("posture", {"kd": 0.0}, "posture.kd"),
     ("safety", {"deadline_overrun_budget": 200}, "deadline_overrun_budget 200 can never"),

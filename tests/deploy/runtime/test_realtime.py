@@ -84,25 +84,51 @@ def test_without_the_privilege_it_is_refused_naming_the_setting() -> None:
     assert "rates.loop_priority: null" in result.stdout
 
 
+def test_a_lower_nice_value_is_probed_and_refused_without_the_privilege() -> None:
+    result = _child(_UNPRIVILEGED + textwrap.dedent("""
+        import os
+        from deploy.runtime import realtime
+        start = os.getpriority(os.PRIO_PROCESS, 0)
+        allowed = realtime.check_nice(start - 5) is None
+        assert os.getpriority(os.PRIO_PROCESS, 0) == start  # the probe restores
+        drop()
+        assert realtime.check_nice(start + 3) is None  # less CPU: always allowed
+        problem = realtime.check_nice(start - 5)
+        assert problem is not None
+        try:
+            realtime.set_nice(start - 5)
+            raise SystemExit("took a lower nice value")
+        except realtime.RealtimePriorityError as error:
+            assert str(error) == problem
+        realtime.set_nice(start + 3)
+        assert os.getpriority(os.PRIO_PROCESS, 0) == start + 3
+        print(allowed, problem)
+    """))
+    assert result.returncode == 0, result.stderr
+    assert "nmpc.nice: cannot run the NMPC at nice" in result.stdout
+    assert "set nmpc.nice: 0" in result.stdout
+
+
 @pytest.mark.parametrize("backend", ["hw", "sim"])
 def test_deploy_refuses_on_robots_and_warns_in_simulation(backend: str) -> None:
     result = _child(_UNPRIVILEGED + textwrap.dedent(f"""
-        from deploy.cli.deploy_command import usable_loop_priority
+        from deploy.cli.deploy_command import usable_priorities
         from deploy.config.deploy_config import load_deploy_config
         from deploy.config.files import ConfigError
         config, _ = load_deploy_config("two_go2")
-        assert config.rates.loop_priority == 50  # the shipped config asks for it
+        # the shipped config asks for both
+        assert (config.rates.loop_priority, config.nmpc.nice) == (50, -10)
         drop()
         said = []
         try:
-            print("priority", usable_loop_priority(config, {backend!r}, said.append))
+            print("priorities", usable_priorities(config, {backend!r}, said.append))
         except ConfigError as error:
             print("error", error)
         print("said", said)
     """))
     assert result.returncode == 0, result.stderr
-    if backend == "hw":
+    if backend == "hw":  # the first refusal ends it
         assert result.stdout.startswith("error rates.loop_priority: cannot run the loop")
     else:
-        assert result.stdout.startswith("priority None")
-        assert "(simulation: the loop runs at normal priority)" in result.stdout
+        assert result.stdout.startswith("priorities (None, 0)")
+        assert result.stdout.count("(simulation: normal scheduling instead)") == 2
