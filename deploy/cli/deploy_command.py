@@ -119,7 +119,7 @@ def run_deploy(args: argparse.Namespace) -> int:
         links = open_links(config, clock)
         if config.watchdog.enabled:
             watchdog = Watchdog(WatchdogSpec.of(
-                config, config.sim.time_scale if backend is not None else 1.0))
+                config, config.sim.time_scale if backend is not None else 1.0, loop_priority))
             say("watchdog running (damping to every robot if the loop stops)")
         if not args.no_record:
             path = (Path(args.record) if args.record
@@ -149,7 +149,8 @@ def run_deploy(args: argparse.Namespace) -> int:
             summary["loop_priority"] = loop_priority
             summary["nmpc_nice"] = nmpc_nice
             summary["watchdog"] = {"enabled": watchdog is not None,
-                                   "tripped": loop.watchdog_tripped}
+                                   "tripped": loop.watchdog_tripped,
+                                   "priority": loop_priority if watchdog is not None else None}
         if watchdog is not None:
             watchdog.disarm()
         if recorder is not None:

@@ -23,6 +23,11 @@ took the world's time (the simulated robots fell behind: safe stops); at nice -1
 45-57 Hz against 40-51 Hz at nice 0 in alternating runs at time scale 1.0 (README). A nice
 value below the current one needs ``CAP_SYS_NICE`` or ``RLIMIT_NICE`` (``nice`` in
 limits.conf).
+
+The watchdog's process (``deploy.safety.watchdog``) runs at the loop's priority: its 2 ms
+watch must not wait behind the NMPC's process (nice -10) or the world, and at equal priority
+Linux places it on a core that is not running the loop (the same priority needs no further
+permission than the loop's).
 """
 
 from __future__ import annotations
@@ -31,7 +36,7 @@ import contextlib
 import os
 from collections.abc import Iterator
 
-__all__ = ["RealtimePriorityError", "applied", "check", "check_nice", "set_nice"]
+__all__ = ["RealtimePriorityError", "applied", "check", "check_nice", "set_nice", "set_priority"]
 
 SETTING = "rates.loop_priority"
 NICE_SETTING = "nmpc.nice"
@@ -70,6 +75,17 @@ def check(priority: int | None) -> str | None:
     return None
 
 
+def set_priority(priority: int | None) -> None:
+    """The calling thread at ``SCHED_FIFO`` ``priority`` from now on (nothing if None);
+    ``RealtimePriorityError`` if it cannot be set."""
+    if priority is None:
+        return
+    try:
+        _set(os.SCHED_FIFO, priority)
+    except (OSError, AttributeError) as error:
+        raise RealtimePriorityError(_why_not(priority, error)) from error
+
+
 @contextlib.contextmanager
 def applied(priority: int | None) -> Iterator[None]:
     """The calling thread at ``SCHED_FIFO`` ``priority`` inside the block (nothing if None),
@@ -77,11 +93,8 @@ def applied(priority: int | None) -> Iterator[None]:
     if priority is None:
         yield
         return
-    try:
-        previous = _current()
-        _set(os.SCHED_FIFO, priority)
-    except (OSError, AttributeError) as error:
-        raise RealtimePriorityError(_why_not(priority, error)) from error
+    previous = _current()
+    set_priority(priority)
     try:
         yield
     finally:

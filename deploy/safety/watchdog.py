@@ -30,6 +30,7 @@ from typing import TYPE_CHECKING
 from pydantic import Field
 
 from core.model.strict_model import StrictModel
+from deploy.runtime import realtime
 from deploy.runtime.process_names import name_this_process
 from drivers.link_errors import DriverError
 from drivers.unitree.a1_driver import A1Driver
@@ -66,12 +67,14 @@ class WatchdogSpec:
     timeout_wall_s: float
     period_wall_s: float
     damping_wall_s: float
+    priority: int | None = None  # SCHED_FIFO priority of its watch (None: normal scheduling)
 
     @classmethod
-    def of(cls, config: DeployConfig, time_scale: float = 1.0) -> WatchdogSpec:
+    def of(cls, config: DeployConfig, time_scale: float = 1.0,
+           priority: int | None = None) -> WatchdogSpec:
         settings = config.watchdog
         return cls(config, config.safety.damping_kd, settings.timeout_s / time_scale,
-                   settings.period_s / time_scale, settings.damping_s / time_scale)
+                   settings.period_s / time_scale, settings.damping_s / time_scale, priority)
 
 
 def _open_drivers(config: DeployConfig) -> list[UnitreeLowLevelDriver]:
@@ -95,6 +98,13 @@ def _watch(spec: WatchdogSpec, heartbeat: Synchronized, state: Synchronized,
     try:
         drivers = _open_drivers(spec.config)
     except DriverError as error:
+        ready.send(f"error: {error}")
+        return
+    try:  # after the links: DDS's own threads stay at normal scheduling
+        realtime.set_priority(spec.priority)
+    except realtime.RealtimePriorityError as error:
+        for driver in drivers:
+            driver.close()
         ready.send(f"error: {error}")
         return
     ready.send("ready")
@@ -150,6 +160,11 @@ class Watchdog:
     @property
     def alive(self) -> bool:
         return self._process.is_alive()
+
+    @property
+    def pid(self) -> int | None:
+        """The watchdog process's id (its watch runs on its main thread)."""
+        return self._process.pid
 
     def disarm(self, timeout_s: float = 5.0) -> None:
         """The run ended cleanly: stop watching (no command is sent). After a trip, the

@@ -1,6 +1,6 @@
 """The watchdog outside the control process, against Go2 fakes on real DDS: after kill -9 of
 the loop's process, or a loop that stops beating, every robot gets damping-only commands
-within 50 ms; a clean end sends nothing."""
+within 50 ms; a clean end sends nothing; its watch at the loop's real-time priority."""
 
 from __future__ import annotations
 
@@ -14,8 +14,10 @@ import pytest
 
 from core.plant.standard_scenarios import ring_team_settings
 from deploy.config.deploy_config import DeployConfig, Go2Link, load_deploy_config
+from deploy.runtime import realtime
 from deploy.safety.watchdog import Watchdog, WatchdogSpec
 from drivers.interfaces import JointCommand
+from drivers.link_errors import DriverError
 from drivers.mujoco.scene import build_team_scene
 from drivers.mujoco.simulation import TeamSimulation
 from drivers.robot_descriptions import srb_parameters
@@ -139,3 +141,40 @@ def test_a_loop_that_stops_beating_is_taken_over_and_a_clean_end_sends_nothing(t
         time.sleep(0.002)
     quiet.disarm()
     assert not quiet.tripped and _observe(fakes, 0.1) == []
+
+
+def _policy(thread: int) -> tuple[int, int]:
+    """(policy, priority) of one thread (Linux takes a thread id where a pid goes)."""
+    return os.sched_getscheduler(thread), os.sched_getparam(thread).sched_priority
+
+
+def test_the_watch_runs_at_the_loops_priority_and_still_takes_over(team) -> None:
+    config, fakes = team
+    priority = 20 if realtime.check(20) is None else None  # where this process may
+    watchdog = Watchdog(WatchdogSpec.of(config, priority=priority))
+    try:
+        pid = watchdog.pid
+        assert pid is not None
+        threads = [int(t) for t in os.listdir(f"/proc/{pid}/task")]
+        assert len(threads) > 1  # DDS's threads beside the watch
+        others = {_policy(t) for t in threads if t != pid}
+        assert others == {(os.SCHED_OTHER, 0)}  # started before the priority: normal
+        if priority is None:
+            assert _policy(pid) == (os.SCHED_OTHER, 0)
+        else:
+            assert _policy(pid) == (os.SCHED_FIFO, priority)
+        watchdog.beat()
+        stopped_s = time.monotonic()
+        after = _observe(fakes, 0.2)
+        assert watchdog.tripped
+        for name in fakes:
+            damping = [t for t, n, c in after if n == name and _is_damping(c)]
+            assert damping and damping[0] - stopped_s <= 0.050
+    finally:
+        watchdog.disarm()
+
+
+def test_a_priority_it_cannot_take_stops_its_start_with_the_reason(team) -> None:
+    config, _ = team
+    with pytest.raises(DriverError, match=r"watchdog did not start: .*rates\.loop_priority"):
+        Watchdog(WatchdogSpec.of(config, priority=100))  # beyond SCHED_FIFO's 1-99
