@@ -18,7 +18,7 @@ import threading
 import time
 from collections.abc import Callable
 from pathlib import Path
-from typing import Any
+from typing import Any, NamedTuple
 
 import numpy as np
 import yaml
@@ -87,13 +87,13 @@ def run_deploy(args: argparse.Namespace) -> int:
     say(f"{config_name(args.config)}: scenario {scenario.name!r}, robots "
         f"{', '.join(config.robots)}, backend {args.backend}, run {duration_s:g} s")
     # probed before any process or thread exists (they would inherit the policy)
-    loop_priority, nmpc_nice = usable_priorities(config, args.backend, say)
+    scheduling = usable_scheduling(config, args.backend, say)
     in_process = config.nmpc.runner == "process"
     control = TeamController(scenario, CompiledCodeCache(), tick_s=1.0 / config.rates.wbc_hz,
                              build_mpc=not in_process, nmpc_shares_loop=not in_process)
     # Built before the world starts: a cold cache compiles the NLPs for minutes.
-    process = (NmpcProcess(scenario, control.settings, control.cache, nice=nmpc_nice)
-               if in_process else None)
+    process = (NmpcProcess(scenario, control.settings, control.cache, nice=scheduling.nmpc_nice,
+                           cpus=scheduling.nmpc_cpus) if in_process else None)
     runner: NmpcRunner | None = process
     backend: SimBackend | None = None
     recorder: FlightRecorder | None = None
@@ -119,7 +119,8 @@ def run_deploy(args: argparse.Namespace) -> int:
         links = open_links(config, clock)
         if config.watchdog.enabled:
             watchdog = Watchdog(WatchdogSpec.of(
-                config, config.sim.time_scale if backend is not None else 1.0, loop_priority))
+                config, config.sim.time_scale if backend is not None else 1.0,
+                scheduling.loop_priority))
             say("watchdog running (damping to every robot if the loop stops)")
         if not args.no_record:
             path = (Path(args.record) if args.record
@@ -139,18 +140,19 @@ def run_deploy(args: argparse.Namespace) -> int:
             sleep = faults.sleep(sleep)
         loop = deploy_loop(config, control, links, recorder, OperatorPrompt(args.yes), stop,
                            duration_s, clock, sleep, runner, watchdog)
-        with stop.installed(), realtime.applied(loop_priority):
+        with (stop.installed(), realtime.applied(scheduling.loop_priority),
+              realtime.pinned(scheduling.loop_cpus())):
             loop.run(f"start: porter deploy, scenario {scenario.name}")
     finally:
         sys.setswitchinterval(switch_interval_s)
         summary = None
         if loop is not None:
             summary = deploy_summary(loop, args, backend)
-            summary["loop_priority"] = loop_priority
-            summary["nmpc_nice"] = nmpc_nice
+            summary.update(scheduling.summary())
             summary["watchdog"] = {"enabled": watchdog is not None,
                                    "tripped": loop.watchdog_tripped,
-                                   "priority": loop_priority if watchdog is not None else None}
+                                   "priority": (scheduling.loop_priority if watchdog is not None
+                                                else None)}
         if watchdog is not None:
             watchdog.disarm()
         if recorder is not None:
@@ -174,24 +176,43 @@ def run_deploy(args: argparse.Namespace) -> int:
     return exit_code(loop, stop)
 
 
-def usable_priorities(config: DeployConfig, backend: str, say: Callable[[str], None]
-                      ) -> tuple[int | None, int]:
-    """(``rates.loop_priority``, ``nmpc.nice``) as far as this process may take them; one it
-    may not is on robots (``hw``) a ``ConfigError`` (the loop's timing rests on it), in
-    simulation a warning, and normal scheduling instead (None, 0)."""
-    priority, nice = config.rates.loop_priority, config.nmpc.nice
-    problems = {"priority": realtime.check(priority), "nice": realtime.check_nice(nice)}
-    for which, problem in problems.items():
+class Scheduling(NamedTuple):
+    """How porter's processes are scheduled (``deploy.runtime.realtime``), as far as this
+    process may: the loop's SCHED_FIFO priority and CPUs, the NMPC process's nice value and
+    CPUs (None / 0: the normal policy, any CPU)."""
+
+    loop_priority: int | None
+    nmpc_nice: int
+    loop_cpu: int | None
+    nmpc_cpus: list[int] | None
+
+    def loop_cpus(self) -> list[int] | None:
+        return None if self.loop_cpu is None else [self.loop_cpu]
+
+    def summary(self) -> dict[str, object]:
+        return self._asdict()
+
+
+def usable_scheduling(config: DeployConfig, backend: str, say: Callable[[str], None]
+                      ) -> Scheduling:
+    """``rates.loop_priority``, ``nmpc.nice``, ``rates.loop_cpu`` and ``nmpc.cpus`` as far as
+    this process may take them; one it may not is on robots (``hw``) a ``ConfigError`` (the
+    loop's timing rests on it), in simulation a warning, and the normal policy instead."""
+    wanted = Scheduling(config.rates.loop_priority, config.nmpc.nice, config.rates.loop_cpu,
+                        config.nmpc.cpus)
+    problems = {"loop_priority": realtime.check(wanted.loop_priority),
+                "nmpc_nice": realtime.check_nice(wanted.nmpc_nice),
+                "loop_cpu": realtime.check_cpus(wanted.loop_cpus(), "rates.loop_cpu"),
+                "nmpc_cpus": realtime.check_cpus(wanted.nmpc_cpus, "nmpc.cpus")}
+    usable = wanted._asdict()
+    for field, problem in problems.items():
         if problem is None:
             continue
         if backend == "hw":
             raise ConfigError(problem)
         say(f"{problem} (simulation: normal scheduling instead)")
-        if which == "priority":
-            priority = None
-        else:
-            nice = 0
-    return priority, nice
+        usable[field] = 0 if field == "nmpc_nice" else None
+    return Scheduling(**usable)
 
 
 def deploy_loop(config: DeployConfig, control: TeamController, links: TeamLinks,

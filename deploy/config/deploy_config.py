@@ -118,6 +118,9 @@ class RatesConfig(StrictModel):
     # normal scheduling. On robots a priority that cannot be set is an error; in simulation
     # the loop then runs at normal priority with a warning.
     loop_priority: int | None = Field(None, ge=1, le=99)
+    # the CPU the loop's thread runs on while it runs (deploy.runtime.realtime); null: any.
+    # A CPU this process may not use is an error on robots, a warning in simulation.
+    loop_cpu: int | None = Field(None, ge=0, le=1023)
 
 
 class NmpcRunConfig(StrictModel):
@@ -133,6 +136,16 @@ class NmpcRunConfig(StrictModel):
     # gets the CPU before normal-priority processes. A value it cannot take is an error on
     # robots, a warning (and 0) in simulation.
     nice: int = Field(0, ge=-20, le=19)
+    # the CPUs of the NMPC's process and its ADMM workers (runner: process); null: any.
+    # Apart from rates.loop_cpu; unavailable ones as for rates.loop_cpu.
+    cpus: list[Annotated[int, Field(ge=0, le=1023)]] | None = Field(None, min_length=1)
+
+    @field_validator("cpus")
+    @classmethod
+    def _distinct(cls, cpus: list[int] | None) -> list[int] | None:
+        if cpus is not None and len(set(cpus)) != len(cpus):
+            raise ValueError(f"names a CPU twice: {cpus}")
+        return cpus
 
 
 class PreflightConfig(StrictModel):
@@ -252,6 +265,14 @@ class DeployConfig(StrictModel):
         return self
 
     @model_validator(mode="after")
+    def _cpus_apart(self) -> DeployConfig:
+        cpus, loop_cpu = self.nmpc.cpus, self.rates.loop_cpu
+        if cpus is not None and loop_cpu in cpus:
+            raise ValueError(f"nmpc.cpus: {cpus} includes rates.loop_cpu {loop_cpu}: the "
+                             "loop's core is its own; set them apart or one of them to null")
+        return self
+
+    @model_validator(mode="after")
     def _budgets_can_trip(self) -> DeployConfig:
         for where, safety in (("safety", self.safety), ("sim.safety_overrides", None)):
             settings = safety if safety is not None else self.sim_safety()
@@ -329,9 +350,11 @@ def load_deploy_config(path_or_name: Path | str) -> tuple[DeployConfig, Scenario
                               f"controller.executor: {controller.executor!r}; set one of them")
         scenario = scenario.model_copy(update={"controller": controller.model_copy(
             update={"executor": executor})})
-    if config.nmpc.nice != 0 and config.nmpc.runner == "thread":
-        raise ConfigError(f"{path}: nmpc.nice: {config.nmpc.nice} needs nmpc.runner: process "
-                          "(a thread runs in the loop's process); set one of them")
+    if config.nmpc.runner == "thread":
+        for field, value, unset in (("nice", config.nmpc.nice, 0), ("cpus", config.nmpc.cpus, None)):
+            if value != unset:
+                raise ConfigError(f"{path}: nmpc.{field}: {value} needs nmpc.runner: process "
+                                  "(a thread runs in the loop's process); set one of them")
     team = [agent.name for agent in scenario.team]
     if sorted(config.robots) != sorted(team):
         missing = [name for name in team if name not in config.robots]

@@ -42,13 +42,14 @@ class NmpcProcessError(RuntimeError):
 
 
 def _serve(scenario: Scenario, settings: MpcSettings, cache: CompiledCodeCache,
-           connection: Connection, nice: int = 0) -> None:
+           connection: Connection, nice: int = 0, cpus: list[int] | None = None) -> None:
     # Ctrl-C at the terminal reaches the whole process group: the loop sits the team down,
     # and the NMPC (its ADMM workers inherit the ignored signal) lives until it is told.
     signal.signal(signal.SIGINT, signal.SIG_IGN)
     name_this_process("porter-nmpc")
     if nice != 0:  # before the ADMM workers start: they inherit it
         realtime.set_nice(nice)
+    realtime.pin(cpus)  # the same
     controller = build_team_mpc(scenario, settings, cache)
     freeze_startup_objects()  # no full collection of the NMPC's objects during updates
     connection.send("ready")
@@ -80,19 +81,21 @@ class NmpcProcess:
     ``clock`` is the loop's clock (simulated seconds under a time scale); an update's
     ``wall_s`` is converted to it from the system's monotonic clock, which both processes
     share. Construction blocks until the NMPC is built (``start_timeout_s``: a cold cache
-    compiles for minutes). ``nice``: the process's nice value (``deploy.runtime.realtime``).
+    compiles for minutes). ``nice``: the process's nice value, ``cpus``: the CPUs it (and its
+    ADMM workers) may run on, None: any (``deploy.runtime.realtime``).
     """
 
     def __init__(self, scenario: Scenario, settings: MpcSettings, cache: CompiledCodeCache,
                  clock: Callable[[], float] = time.monotonic,
-                 start_timeout_s: float = 900.0, nice: int = 0) -> None:
+                 start_timeout_s: float = 900.0, nice: int = 0,
+                 cpus: list[int] | None = None) -> None:
         self.clock = clock
         context = mp.get_context("spawn")
         self._connection, child = context.Pipe()
         # Not a daemon: daemonic processes may not start the ADMM workers. It ends when told,
         # or when its pipe closes (this process gone).
-        self._process = context.Process(target=_serve, args=(scenario, settings, cache, child, nice),
-                                        name="porter-nmpc")
+        self._process = context.Process(
+            target=_serve, args=(scenario, settings, cache, child, nice, cpus), name="porter-nmpc")
         self._process.start()
         child.close()
         self._pending: tuple[NmpcDecision, int, float, float] | None = None
@@ -109,6 +112,11 @@ class NmpcProcess:
     def busy(self) -> bool:
         """An update is submitted and its result not yet taken."""
         return self._pending is not None
+
+    @property
+    def pid(self) -> int | None:
+        """The NMPC process's id."""
+        return self._process.pid
 
     @property
     def alive(self) -> bool:

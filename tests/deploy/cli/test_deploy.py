@@ -4,6 +4,7 @@ MoCap tracker, the base velocity estimate, pacing) on their own."""
 
 from __future__ import annotations
 
+import os
 import platform
 import re
 import signal
@@ -71,6 +72,9 @@ def test_deploy_on_the_sim_backend_stands_walks_carries_and_sits_down(
     assert ("rates.loop_priority: cannot run the loop" in captured.err) is not allowed
     nice_allowed = realtime.check_nice(-10) is None
     assert summary["nmpc_nice"] == (-10 if nice_allowed else 0)
+    cpus = os.sched_getaffinity(0)  # the shipped CPUs where this machine has them
+    assert summary["loop_cpu"] == (0 if 0 in cpus else None)
+    assert summary["nmpc_cpus"] == ([1] if 1 in cpus else None)
     assert summary["wbc_failed_ticks"] == 0
     assert summary["run_s"] == pytest.approx(load_deploy_config(TWO_GO2)[1].duration_s, abs=0.1)
     # margin flags are counted and logged, never counted as failed solves
@@ -312,6 +316,21 @@ def test_the_nmpc_executor_overrides_the_scenario_default_and_conflicts_are_name
     path.write_text(yaml.safe_dump(data))
     with pytest.raises(ConfigError, match="nmpc.nice: -10 needs nmpc.runner: process"):
         load_deploy_config(path)
+    data["nmpc"] = {"runner": "thread", "cpus": [1]}  # so do its CPUs
+    path.write_text(yaml.safe_dump(data))
+    with pytest.raises(ConfigError, match=re.escape("nmpc.cpus: [1] needs nmpc.runner: process")):
+        load_deploy_config(path)
+
+
+@pytest.mark.parametrize(("values", "message"), [
+    ({"cpus": []}, "nmpc.cpus"),
+    ({"cpus": [1, 1]}, "nmpc.cpus.*names a CPU twice"),
+    ({"cpus": [0, 1]}, r"nmpc.cpus: \[0, 1\] includes rates.loop_cpu 0"),  # the shipped loop's
+])
+def test_the_nmpc_cpus_are_distinct_and_apart_from_the_loops(tmp_path: Path, values: dict,
+                                                             message: str) -> None:
+    with pytest.raises(ConfigError, match=message):
+        load_deploy_config(_config(tmp_path, nmpc=values))
 
 
 @pytest.mark.parametrize(("section", "values", "field"), [
@@ -323,6 +342,8 @@ def test_the_nmpc_executor_overrides_the_scenario_default_and_conflicts_are_name
     ("rates", {"max_plan_age_s": float("nan")}, "rates.max_plan_age_s"),
     ("rates", {"loop_priority": 0}, "rates.loop_priority"),
     ("rates", {"loop_priority": 100}, "rates.loop_priority"),
+    ("rates", {"loop_cpu": -1}, "rates.loop_cpu"),
+    ("nmpc", {"cpus": [-1]}, "nmpc.cpus"),
     ("nmpc", {"nice": -21}, "nmpc.nice"),
     ("mocap", {"stale_timeout_s": 30.0}, "mocap.stale_timeout_s"),
     ("posture", {"kd": 0.0}, "posture.kd"),

@@ -3,6 +3,7 @@ hand-over, the warm start it started from, and a dead process reported, not hung
 
 from __future__ import annotations
 
+import os
 import time
 
 import numpy as np
@@ -84,8 +85,10 @@ def test_the_process_plans_what_the_loops_process_plans(run: SimRun) -> None:
 
 def test_a_dead_process_fails_the_running_update_then_refuses_the_next(run: SimRun) -> None:
     control = run.control
-    runner = NmpcProcess(control.scenario, control.settings, control.cache)
+    cpu = max(os.sched_getaffinity(0))
+    runner = NmpcProcess(control.scenario, control.settings, control.cache, cpus=[cpu])
     try:
+        assert os.sched_getaffinity(runner.pid) == {cpu}  # nmpc.cpus, from its start
         runner.submit(_decision(run), 3)
         runner.kill()
         result = _wait(runner, timeout_s=5.0)

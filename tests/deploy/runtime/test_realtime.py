@@ -112,7 +112,7 @@ def test_a_lower_nice_value_is_probed_and_refused_without_the_privilege() -> Non
 @pytest.mark.parametrize("backend", ["hw", "sim"])
 def test_deploy_refuses_on_robots_and_warns_in_simulation(backend: str) -> None:
     result = _child(_UNPRIVILEGED + textwrap.dedent(f"""
-        from deploy.cli.deploy_command import usable_priorities
+        from deploy.cli.deploy_command import usable_scheduling
         from deploy.config.deploy_config import load_deploy_config
         from deploy.config.files import ConfigError
         config, _ = load_deploy_config("two_go2")
@@ -121,7 +121,7 @@ def test_deploy_refuses_on_robots_and_warns_in_simulation(backend: str) -> None:
         drop()
         said = []
         try:
-            print("priorities", usable_priorities(config, {backend!r}, said.append))
+            print("scheduling", tuple(usable_scheduling(config, {backend!r}, said.append)))
         except ConfigError as error:
             print("error", error)
         print("said", said)
@@ -130,5 +130,59 @@ def test_deploy_refuses_on_robots_and_warns_in_simulation(backend: str) -> None:
     if backend == "hw":  # the first refusal ends it
         assert result.stdout.startswith("error rates.loop_priority: cannot run the loop")
     else:
-        assert result.stdout.startswith("priorities (None, 0)")
-        assert result.stdout.count("(simulation: normal scheduling instead)") == 2
+        cpus = os.sched_getaffinity(0)  # the shipped CPUs stay where this machine has them
+        assert result.stdout.startswith(
+            f"scheduling (None, 0, {0 if 0 in cpus else None}, {[1] if 1 in cpus else None})")
+        assert result.stdout.count("(simulation: normal scheduling instead)") == 2 + len(
+            {0, 1} - cpus)
+
+
+@pytest.mark.parametrize("backend", ["hw", "sim"])
+def test_cpus_this_process_may_not_use_are_refused_on_robots_and_left_in_simulation(
+        backend: str) -> None:
+    result = _child(textwrap.dedent(f"""
+        import os
+        from deploy.cli.deploy_command import usable_scheduling
+        from deploy.config.deploy_config import load_deploy_config
+        from deploy.config.files import ConfigError
+        config, _ = load_deploy_config("two_go2")
+        assert (config.rates.loop_cpu, config.nmpc.cpus) == (0, [1])  # the shipped ones
+        os.sched_setaffinity(0, {{0}})  # as on a one-core computer
+        said = []
+        try:
+            print("scheduling", tuple(usable_scheduling(config, {backend!r}, said.append))[2:])
+        except ConfigError as error:
+            print("error", error)
+        print("said", said)
+    """))
+    assert result.returncode == 0, result.stderr
+    if backend == "hw":
+        assert result.stdout.startswith("error nmpc.cpus: CPU 1 is not available to this "
+                                        "process (it may run on 0); name those or set "
+                                        "nmpc.cpus: null")
+    else:
+        assert result.stdout.startswith("scheduling (0, None)")
+        assert "nmpc.cpus: CPU 1 is not available" in result.stdout
+
+
+def test_the_loop_is_pinned_inside_and_free_after() -> None:
+    result = _child(textwrap.dedent("""
+        import os
+        from deploy.runtime import realtime
+        before = os.sched_getaffinity(0)
+        cpu = min(before)
+        assert realtime.check_cpus([cpu], "rates.loop_cpu") is None
+        with realtime.pinned([cpu]):
+            assert os.sched_getaffinity(0) == {cpu}
+        assert os.sched_getaffinity(0) == before
+        with realtime.pinned(None):
+            assert os.sched_getaffinity(0) == before
+        try:
+            realtime.pin([4096 + cpu])  # beyond any CPU set
+            raise SystemExit("pinned to a CPU that does not exist")
+        except realtime.RealtimePriorityError as error:
+            print(error)
+        assert os.sched_getaffinity(0) == before
+    """))
+    assert result.returncode == 0, result.stderr
+    assert result.stdout.startswith("cannot run on CPUs [")
