@@ -85,7 +85,8 @@ def deploy_row(summary: dict[str, Any]) -> dict[str, Any]:
             "progress_toward_goal_m": summary["payload"]["progress_toward_goal_m"],
             "cpu_per_running_s": summary.get("cpu_per_running_s", {}),
             "tick_stages_wall": summary.get("tick_stages_wall", {}),
-            "gc_pauses": summary.get("gc_pauses", {})}
+            "gc_pauses": summary.get("gc_pauses", {}),
+            "world_holds": (summary.get("sim_ground_truth") or {}).get("holds")}
 
 
 def run_bench(config: str, time_scales: list[float], runs: int, duration_s: float,
@@ -145,6 +146,13 @@ def _gc_cell(row: dict[str, Any]) -> str:
     return f"{counts} {longest:.2f}"
 
 
+def _holds_cell(row: dict[str, Any]) -> str:
+    holds = row.get("world_holds")
+    if not holds:
+        return "-"
+    return f"{holds['over_two_state_periods']} {1e3 * holds['longest_s']:.0f}"
+
+
 def format_budget(rows: list[dict[str, Any]]) -> str:
     """CPU-s per simulated second by process, and the tick's stages [ms wall, p50 / p99]."""
     cpu_cells = []
@@ -155,13 +163,17 @@ def format_budget(rows: list[dict[str, Any]]) -> str:
         cpu_cells.append([row["config"], f"{row['time_scale']:.2f}", _number(cpu.get("porter"), 2),
                           _number(nmpc, 2), _number(workers if cpu else None, 2),
                           _number(cpu.get("porter-sim-world"), 2),
-                          _number(sum(cpu.values()) if cpu else None, 2), _gc_cell(row)])
+                          _number(sum(cpu.values()) if cpu else None, 2), _gc_cell(row),
+                          _holds_cell(row)])
     cpu_table = render_table(
         ["config", *(Column(name, "right") for name in (
-            "scale", "porter", "nmpc", "workers", "world", "total", "loop gc"))], cpu_cells,
+            "scale", "porter", "nmpc", "workers", "world", "total", "loop gc",
+            "world holds"))], cpu_cells,
         ["CPU-s per simulated s over RUNNING (porter: the loop's process; nmpc: its process; "
          "workers: the ADMM workers, summed); loop gc: the loop's collections over the whole "
-         "run, gen0/gen1/gen2 count, and the longest pause [ms wall]"])
+         "run, gen0/gen1/gen2 count, and the longest pause [ms wall]; world holds: the sim "
+         "world's late cycles, stepping on its last commands with no state sent, over two state "
+         "periods (count) and the longest [simulated ms]"])
     stage_cells = []
     for row in rows:
         stages = row.get("tick_stages_wall") or {}

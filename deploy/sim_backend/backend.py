@@ -122,6 +122,11 @@ class SimBackend:
             except can.CanError:
                 return  # bus shut down
 
+    @property
+    def pid(self) -> int | None:
+        """The world process's id."""
+        return self._process.pid
+
     def ground_truth(self, timeout_s: float = 5.0) -> dict[str, Any] | None:
         """Simulator truth (``SimWorld.ground_truth``), or None when the world is gone."""
         try:

@@ -19,7 +19,11 @@ takes the newest valid command of each fake, advances physics to the (scaled, se
 ``ScaledClock``) wall clock at 1 kHz
 (at most ``MAX_CATCH_UP_STEPS`` per cycle; beyond that simulated time slips behind wall time
 and ``lag_s`` says by how much), publishes each robot's state, and a MoCap frame / F/T sample
-when due. The control pipe answers ``"ground_truth"`` and ends the world on ``"stop"``.
+when due. A cycle that runs late steps the physics several steps at once on the commands it
+last read, with no state published in between: the simulated robots "hold" for that long,
+which real motors never do; ``holds`` reports it (the longest, and how many exceeded two
+state periods), so that a run on a loaded machine says how far its world was from real.
+The control pipe answers ``"ground_truth"`` and ends the world on ``"stop"``.
 
 Faults (``sim.faults``) are injected at their simulated time after the loop starts; from the
 first one on, every command a fake applies is counted, and those with stiffness or
@@ -182,6 +186,8 @@ class SimWorld:
         self.max_tilt_rad = dict.fromkeys(self.robot_types, 0.0)
         self.lag_s = 0.0
         self.steps = 0
+        self.longest_hold_s = 0.0  # the most simulated time stepped at once (after the first)
+        self.long_holds = 0  # cycles stepping more than two state periods at once
         self.silent = set(config.sim.silent_robots)
         self.mocap_stopped = False
         self.network_faults: set[str] = set()  # sent beside every MoCap frame
@@ -276,6 +282,8 @@ class SimWorld:
         return {"time_s": sim.time_s, "payload_start_m": self.payload_start_m.tolist(),
                 "payload_position_m": sim.payload_pose()[0].tolist(), "robots": robots,
                 "lag_s": self.lag_s, "physics_steps": self.steps,
+                "holds": {"longest_s": self.longest_hold_s,
+                          "over_two_state_periods": self.long_holds},
                 "mocap_frames": self.natnet.frames_published,
                 "faults_applied": self.faults_applied}
 
@@ -326,6 +334,9 @@ class SimWorld:
                 self.lag_s += (due - MAX_CATCH_UP_STEPS) * dt
                 due = MAX_CATCH_UP_STEPS
             if due > 0:
+                if self.steps > 0:  # the first cycle steps from the world's start
+                    self.longest_hold_s = max(self.longest_hold_s, due * dt)
+                    self.long_holds += due > 2 * cycle_steps
                 sim.step(due)
                 self.steps += due
                 self._track()
