@@ -148,7 +148,7 @@ def run_deploy(args: argparse.Namespace) -> int:
         summary = None
         if loop is not None:
             summary = deploy_summary(loop, args, backend)
-            summary.update(scheduling.summary())
+            summary.update(scheduling._asdict())
             summary["watchdog"] = {"enabled": watchdog is not None,
                                    "tripped": loop.watchdog_tripped,
                                    "priority": (scheduling.loop_priority if watchdog is not None
@@ -188,9 +188,6 @@ class Scheduling(NamedTuple):
 
     def loop_cpus(self) -> list[int] | None:
         return None if self.loop_cpu is None else [self.loop_cpu]
-
-    def summary(self) -> dict[str, object]:
-        return self._asdict()
 
 
 def usable_scheduling(config: DeployConfig, backend: str, say: Callable[[str], None]

@@ -72,41 +72,39 @@ def _set(policy: int, priority: int) -> None:
 def check(priority: int | None) -> str | None:
     """Whether this thread may run at ``SCHED_FIFO`` ``priority`` (set and restored at once):
     None if it may (or ``priority`` is None), else why not (the message names the setting)."""
+    try:
+        previous = set_priority(priority)
+    except RealtimePriorityError as error:
+        return str(error)
+    if previous is not None:
+        _set(*previous)
+    return None
+
+
+def set_priority(priority: int | None) -> tuple[int, int] | None:
+    """The calling thread at ``SCHED_FIFO`` ``priority`` from now on (nothing if None); its
+    previous (policy, priority), or None if nothing changed; ``RealtimePriorityError`` if it
+    cannot be set."""
     if priority is None:
         return None
     try:
         previous = _current()
         _set(os.SCHED_FIFO, priority)
     except (OSError, AttributeError) as error:
-        return _why_not(priority, error)
-    _set(*previous)
-    return None
-
-
-def set_priority(priority: int | None) -> None:
-    """The calling thread at ``SCHED_FIFO`` ``priority`` from now on (nothing if None);
-    ``RealtimePriorityError`` if it cannot be set."""
-    if priority is None:
-        return
-    try:
-        _set(os.SCHED_FIFO, priority)
-    except (OSError, AttributeError) as error:
         raise RealtimePriorityError(_why_not(priority, error)) from error
+    return previous
 
 
 @contextlib.contextmanager
 def applied(priority: int | None) -> Iterator[None]:
     """The calling thread at ``SCHED_FIFO`` ``priority`` inside the block (nothing if None),
     its previous policy and priority after; ``RealtimePriorityError`` if it cannot be set."""
-    if priority is None:
-        yield
-        return
-    previous = _current()
-    set_priority(priority)
+    previous = set_priority(priority)
     try:
         yield
     finally:
-        _set(*previous)
+        if previous is not None:
+            _set(*previous)
 
 
 def _why_not_nice(nice: int, error: OSError) -> str:
