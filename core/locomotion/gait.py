@@ -142,15 +142,15 @@ class FootholdPlanner:
         lands at stage k is placed by Raibert's rule for a touchdown k steps ahead.
         """
         contacts = self.gait.schedule(time_s, steps, sample_period_s)
+        previous = np.vstack([self._stance[None], contacts[:-1]])
+        landing = (contacts == 1.0) & (previous == 0.0)  # (steps, 4)
         feet = np.empty((steps, 4, 3))
         current = self.feet_in_world_m.copy()
-        previous = self._stance.copy()
-        for k in range(steps):
-            landing = (contacts[k] == 1.0) & (previous == 0.0)
-            if np.any(landing):
-                target = self._raibert(robot_state, k * sample_period_s,
-                                       reference_states[k][3:6])
-                current[landing] = target[landing]
-            feet[k] = current
-            previous = contacts[k]
+        held_from = 0  # feet stay where they are between landings: fill those stages at once
+        for k in np.flatnonzero(landing.any(axis=1)).tolist():
+            feet[held_from:k] = current
+            target = self._raibert(robot_state, k * sample_period_s, reference_states[k][3:6])
+            current[landing[k]] = target[landing[k]]
+            held_from = k
+        feet[held_from:] = current
         return feet, contacts

@@ -8,7 +8,7 @@ from functools import cached_property
 
 import numpy as np
 
-from core.model.rotations import cross3, yaw_rotation
+from core.model.rotations import cross_rows
 from core.model.srb_model import STATE_SIZE
 from core.model.team import TeamModel
 
@@ -88,18 +88,32 @@ def robot_state_from_payload(team: TeamModel, agent: int, payload_state: np.ndar
 
     Valid for a level payload (roll = pitch = 0) turning about z only, as the references are.
     """
-    yaw = payload_state[8]
-    rotation = yaw_rotation(yaw)
-    state = np.zeros(STATE_SIZE)
-    point = payload_state[0:3] + rotation @ team.coupling_points_in_payload_m[agent]
-    state[0:3] = point - rotation @ team.coupling_points_in_robot_m[agent]
-    point_velocity = payload_state[3:6] + cross3(payload_state[9:12],
-                                                 point - payload_state[0:3])
-    omega = np.array([0.0, 0.0, payload_state[11]])  # level trunk turning with the payload
-    state[3:6] = point_velocity - cross3(omega, rotation @ team.coupling_points_in_robot_m[agent])
-    state[8] = yaw
-    state[11] = payload_state[11]
-    return state
+    return robot_states_from_payload(team, agent, np.asarray(payload_state)[None])[0]
+
+
+def robot_states_from_payload(team: TeamModel, agent: int, payload_states: np.ndarray
+                              ) -> np.ndarray:
+    """``robot_state_from_payload`` of every row of ``payload_states`` (S, 12) at once: (S, 12)
+    (the NMPC asks for a horizon of them per agent at each decision)."""
+    payload = np.asarray(payload_states, dtype=float)
+    yaw = payload[:, 8]
+    cos, sin = np.cos(yaw), np.sin(yaw)
+
+    def rotated(vector: np.ndarray) -> np.ndarray:  # Rz(yaw) @ vector for every row's yaw
+        x, y, z = (float(v) for v in vector)
+        return np.stack([cos * x - sin * y, sin * x + cos * y, np.full_like(yaw, z)], axis=1)
+
+    in_robot = rotated(team.coupling_points_in_robot_m[agent])
+    point = payload[:, 0:3] + rotated(team.coupling_points_in_payload_m[agent])
+    states = np.zeros((len(payload), STATE_SIZE))
+    states[:, 0:3] = point - in_robot
+    point_velocity = payload[:, 3:6] + cross_rows(payload[:, 9:12], point - payload[:, 0:3])
+    omega = np.zeros((len(payload), 3))
+    omega[:, 2] = payload[:, 11]  # level trunk turning with the payload
+    states[:, 3:6] = point_velocity - cross_rows(omega, in_robot)
+    states[:, 8] = yaw
+    states[:, 11] = payload[:, 11]
+    return states
 
 
 def horizon_references(team: TeamModel, reference: WaypointReference | BrakingReference,
@@ -108,6 +122,6 @@ def horizon_references(team: TeamModel, reference: WaypointReference | BrakingRe
     """Robot references (n_A, steps, 12) and payload reference (steps, 12) at stages 1..steps."""
     payload = np.array([reference.payload_state(time_s + k * sample_period_s)
                         for k in range(1, steps + 1)])
-    robots = np.array([[robot_state_from_payload(team, i, x) for x in payload]
+    robots = np.array([robot_states_from_payload(team, i, payload)
                        for i in range(team.agent_count)])
     return robots, payload

@@ -223,7 +223,8 @@ def deploy_loop(config: DeployConfig, control: TeamController, links: TeamLinks,
     up, arm, run, sit down), the NMPC in ``runner`` (default: a thread of this process)."""
     recording = None if recorder is None else control.loop_recording(recorder)
     nmpc = NmpcSchedule(control, runner if runner is not None else NmpcThread(control, clock),
-                        config.rates.nmpc_hz, clock, recording, links.force_torque)
+                        config.rates.nmpc_hz, clock, recording, links.force_torque,
+                        decide_after_send=True)
     settings = LoopSettings(config.rates, config.safety, config.posture,
                             config.preflight.timeout_s)
     loop: ControlLoop

@@ -4,7 +4,10 @@ of finished plans, their recording, and NMPC health for the safety supervisor.
 ``step`` runs in the loop, once per WBC tick while ARMED / RUNNING. A finished result is taken
 first; then, at an NMPC instant with the runner idle, the decision is built from the tick's
 measurements and MoCap frame and submitted, and taken at once if the runner already has it
-(lockstep without a modelled delay). The runner is ``deploy.nmpc_runtime.nmpc_thread.NmpcThread``
+(lockstep without a modelled delay). With ``decide_after_send`` (a runner that answers on a
+later tick: thread or process) the decision is built in ``after_send`` instead, once the tick's
+commands are out: the same tick's measurements and time, but the decision's build (~0.5-1 ms)
+no longer delays that tick's commands. The runner is ``deploy.nmpc_runtime.nmpc_thread.NmpcThread``
 (paced clock: a background thread, the WBC never waits) or
 ``deploy.nmpc_runtime.nmpc_lockstep.LockstepNmpc`` (simulated time).
 
@@ -67,8 +70,10 @@ class NmpcSchedule:
                  clock: Callable[[], float], recording: LoopRecording | None,
                  force_torque: WrenchSensors | None, has_deadline: bool = True,
                  hooks: NmpcHooks | None = None,
-                 truth: Callable[[], tuple[np.ndarray, np.ndarray]] | None = None) -> None:
+                 truth: Callable[[], tuple[np.ndarray, np.ndarray]] | None = None,
+                 decide_after_send: bool = False) -> None:
         self.control, self.runner, self.clock = control, runner, clock
+        self.decide_after_send = decide_after_send
         self.recording, self.force_torque = recording, force_torque
         self.has_deadline, self.hooks, self.truth = has_deadline, hooks, truth
         self.names = control.robot_names
@@ -114,14 +119,28 @@ class NmpcSchedule:
         result = self.runner.take()
         if result is not None:
             flags = self._apply(t, result)
-        due = t >= self.start_s + self.next_instant * self.period_s - 1e-9
-        if (due and not self.runner.busy and frame is not None
-                and all(name in measurements and name in frame.poses for name in self.names)):
-            self._submit(t, measurements, frame)
+        if not self.decide_after_send and self._decide(t, measurements, frame):
             result = self.runner.take()
             if result is not None:
                 flags = self._apply(t, result)
         return flags
+
+    def after_send(self, t: float, measurements: dict[str, RobotMeasurement],
+                   frame: MocapFrame | None) -> None:
+        """With ``decide_after_send``: the tick's decision, after its commands went out (the
+        loop calls this on every ARMED / RUNNING tick; it does nothing otherwise)."""
+        if self.decide_after_send:
+            self._decide(t, measurements, frame)
+
+    def _decide(self, t: float, measurements: dict[str, RobotMeasurement],
+                frame: MocapFrame | None) -> bool:
+        """Build and submit a decision if an instant is due and the runner idle; True if so."""
+        due = t >= self.start_s + self.next_instant * self.period_s - 1e-9
+        if (due and not self.runner.busy and frame is not None
+                and all(name in measurements and name in frame.poses for name in self.names)):
+            self._submit(t, measurements, frame)
+            return True
+        return False
 
     def _submit(self, t: float, measurements: dict[str, RobotMeasurement],
                 frame: MocapFrame) -> None:

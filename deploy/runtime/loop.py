@@ -212,6 +212,12 @@ class ControlLoop:
         stages.mark("filter")
         self._send(sent)
         stages.mark("send")
+        if self.supervisor.state in (S.ARMED, S.RUNNING):
+            try:  # the NMPC's next decision, when built after the commands (async runners)
+                self.nmpc.after_send(t, measurements, frame)
+            except NmpcProcessError as error:
+                self.supervisor.trigger_safe_stop(t, f"NMPC process lost: {error}")
+            stages.mark("nmpc")
         if self.recording is not None:
             self.recording.team_tick(t, self.names, measurements, sent, steps)
             failure = self.recording.writer_failure(t)

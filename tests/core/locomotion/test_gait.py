@@ -68,3 +68,42 @@ def test_raibert_footholds_lead_with_velocity_and_correct_errors() -> None:
     slow[3] = 0.2
     slow_targets = planner.swing_targets(0.2, slow, reference[3:6])
     assert np.all(slow_targets[swing, 0] < targets[swing, 0])
+
+
+def horizon_stage_by_stage(planner: FootholdPlanner, time_s: float, steps: int,
+                           sample_period_s: float, robot_state: np.ndarray,
+                           reference_states: np.ndarray) -> np.ndarray:
+    """The per-stage loop the horizon's fill replaced (the reference here)."""
+    contacts = planner.gait.schedule(time_s, steps, sample_period_s)
+    feet = np.empty((steps, 4, 3))
+    current = planner.feet_in_world_m.copy()
+    previous = planner._stance.copy()
+    for k in range(steps):
+        landing = (contacts[k] == 1.0) & (previous == 0.0)
+        if np.any(landing):
+            target = planner._raibert(robot_state, k * sample_period_s, reference_states[k][3:6])
+            current[landing] = target[landing]
+        feet[k] = current
+        previous = contacts[k]
+    return feet
+
+
+@pytest.mark.parametrize("time_s", [0.0, 0.07, 0.13, 0.31, 1.02])
+def test_horizon_feet_are_the_stage_by_stage_footholds(time_s: float) -> None:
+    """Feet stay put between landings and move to Raibert's foothold at each landing stage,
+    from a stance that is not all-down (mid-trot, as in a run)."""
+    rng = np.random.default_rng(int(time_s * 100))
+    planner = FootholdPlanner(srb_parameters("go2"), TrotGait())
+    state = np.zeros(12)
+    state[2] = 0.3
+    planner.reset(state)
+    planner.update(time_s, state, np.zeros(12))  # the stance of a running trot
+    planner.feet_in_world_m += rng.normal(scale=0.02, size=(4, 3))
+    robot_state = state + rng.normal(scale=0.1, size=12)
+    references = rng.normal(scale=0.3, size=(16, 12))
+    feet, contacts = planner.horizon(time_s, 16, 0.05, robot_state, references)
+    expected = horizon_stage_by_stage(planner, time_s, 16, 0.05, robot_state, references)
+    np.testing.assert_array_equal(feet, expected)
+    np.testing.assert_array_equal(contacts, planner.gait.schedule(time_s, 16, 0.05))
+    moved = np.any(feet[1:] != feet[:-1], axis=(1, 2))
+    assert moved.any() and not moved.all()  # some landings inside the horizon, not at each stage

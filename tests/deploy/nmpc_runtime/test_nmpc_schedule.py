@@ -131,3 +131,25 @@ def test_the_thread_reports_an_exception_as_a_result_not_a_crash() -> None:
         assert "solver exploded" in result.error and not thread.busy
     finally:
         thread.close()
+
+
+def test_deciding_after_send_keeps_the_grid() -> None:
+    """``decide_after_send``: ``step`` only takes results, ``after_send`` decides, on the same
+    ticks (the 60 Hz instants) as deciding in ``step``, with as many plans taking effect."""
+    runs = []
+    for after_send in (False, True):
+        control, clock = FakeControl(), FakeClock()
+        runner = LockstepNmpc(control, clock, True, 0.025)  # type: ignore[arg-type]
+        schedule = NmpcSchedule(control, runner, HZ, clock, None, None,  # type: ignore[arg-type]
+                                has_deadline=True, decide_after_send=after_send)
+        schedule.start(clock())
+        for _ in range(250):
+            decided = len(control.decided)
+            schedule.step(clock(), measurements(), frame(clock()))
+            if after_send:
+                assert len(control.decided) == decided  # step only took results
+            schedule.after_send(clock(), measurements(), frame(clock()))
+            clock.t = round(clock.t + TICK_S, 9)
+        runs.append(([t for t, _ in control.decided], schedule.plans_applied))
+    assert len(runs[0][0]) >= 10
+    assert runs[0] == runs[1]

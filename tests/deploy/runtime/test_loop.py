@@ -36,10 +36,12 @@ class Tapped:
     def __init__(self, driver: RobotDriver, nan_after_s: float | None = None) -> None:
         self.driver, self.nan_after_s = driver, nan_after_s
         self.sent: list[tuple[float, JointCommand]] = []
+        self.reads = 0
         self.name = driver.name
         self._time_s = 0.0
 
     def read(self) -> RobotMeasurement:
+        self.reads += 1
         measurement = self.driver.read()
         self._time_s = measurement.time_s
         if self.nan_after_s is not None and measurement.time_s >= self.nan_after_s:
@@ -112,7 +114,16 @@ def test_paced_clock_runs_the_deploy_sequence_on_the_simulation() -> None:
 
     control = run.control
     nmpc = NmpcSchedule(control, LockstepNmpc(control, clock, True, 0.02), 60.0, clock, None,
-                        run.links.force_torque, has_deadline=True)
+                        run.links.force_torque, has_deadline=True, decide_after_send=True)
+    # each decision's build: how many of this robot's ticks had read and sent by then
+    progress: list[tuple[int, int]] = []
+    build = control.nmpc_inputs
+
+    def nmpc_inputs(*args, **kwargs):  # type: ignore[no-untyped-def]
+        progress.append((tapped.reads, len(tapped.sent)))
+        return build(*args, **kwargs)
+
+    control.nmpc_inputs = nmpc_inputs  # type: ignore[method-assign]
     settings = LoopSettings(RatesConfig(), SupervisorSettings(), PostureConfig(
         stand_up_s=0.3, settle_s=0.1, sit_down_s=0.3, final_damping_s=0.05))
     ok = PreflightReport([PreflightCheck("simulation", True, "in process")])
@@ -135,6 +146,9 @@ def test_paced_clock_runs_the_deploy_sequence_on_the_simulation() -> None:
     assert gc.get_freeze_count() == 0
     # plans every other 60 Hz instant (20 ms each), each planned 20-22 ms ahead
     assert 5 <= outcome["nmpc_updates"] <= 8 and outcome["nmpc_deadline_misses"] >= 5
+    # decided after the tick's commands went out (deploy's async runners), not before them
+    assert len(progress) == outcome["nmpc_updates"]
+    assert all(sent == reads for reads, sent in progress), progress
     # (the tick a transition happens in still sends the old state's command)
     running = [c for t, c in tapped.sent if loop.since[loop.supervisor.state.RUNNING] < t
                < loop.since[loop.supervisor.state.SITTING_DOWN]]
