@@ -118,7 +118,8 @@ class RatesConfig(StrictModel):
     # normal scheduling. On robots a priority that cannot be set is an error; in simulation
     # the loop then runs at normal priority with a warning.
     loop_priority: int | None = Field(None, ge=1, le=99)
-    # the CPU the loop's thread runs on while it runs (deploy.runtime.realtime); null: any.
+    # the CPU the loop's process (its thread and helper threads) runs on while the loop runs
+    # (deploy.runtime.realtime); null: any.
     # A CPU this process may not use is an error on robots, a warning in simulation.
     loop_cpu: int | None = Field(None, ge=0, le=1023)
 

@@ -24,12 +24,17 @@ took the world's time (the simulated robots fell behind: safe stops); at nice -1
 value below the current one needs ``CAP_SYS_NICE`` or ``RLIMIT_NICE`` (``nice`` in
 limits.conf).
 
-CPU affinity (``rates.loop_cpu``, ``nmpc.cpus``): the loop's thread on one core while it
+CPU affinity (``rates.loop_cpu``, ``nmpc.cpus``): the loop's process on one core while it
 runs, the NMPC's process (and its ADMM workers) on others, the rest (the sim's world) where
 the kernel puts it. At time scale 1.0 on two cores the NMPC kept 53-54 Hz with 27-35 late
 updates in 10 s against 50-51 Hz and 56-65 unpinned (update p99 17-18 against 23 ms): it no
-longer migrates after the loop's wake-ups (README). Pinning to CPUs this process may use
-needs no privilege.
+longer migrates after the loop's wake-ups (README). Every thread of the loop's process goes
+to the loop's core, not only the loop's: a helper thread (MoCap client, CAN, the recorder)
+that holds the interpreter lock on the NMPC's core waits there behind the NMPC's nice -10
+process, and the loop waits for the lock meanwhile (a watchdog take-over, 25 ms without a
+tick, was seen once so). On the loop's core a lock holder runs as soon as the loop blocks:
+WBC jitter p99 0.95-1.08 -> 0.24-0.26 ms, tick p99 1.96-2.34 -> 1.63-1.67 ms (README).
+Pinning to CPUs this process may use needs no privilege.
 
 The watchdog's process (``deploy.safety.watchdog``) runs at the loop's priority: its 2 ms
 watch must not wait behind the NMPC's process (nice -10) or the world, and at equal priority
@@ -41,6 +46,7 @@ from __future__ import annotations
 
 import contextlib
 import os
+import threading
 from collections.abc import Iterable, Iterator
 
 __all__ = ["RealtimePriorityError", "applied", "check", "check_cpus", "check_nice", "pin", "pinned",
@@ -162,16 +168,40 @@ def pin(cpus: Iterable[int] | None) -> None:
                                     ) from error
 
 
+def _threads() -> list[int]:
+    """This process's thread ids (Linux: /proc/self/task; elsewhere none is listed)."""
+    try:
+        return [int(tid) for tid in os.listdir("/proc/self/task")]
+    except OSError:
+        return []
+
+
 @contextlib.contextmanager
 def pinned(cpus: Iterable[int] | None) -> Iterator[None]:
-    """The calling thread on ``cpus`` inside the block (nothing if None), on the CPUs it had
-    before after it."""
+    """This process, every thread of it, on ``cpus`` inside the block (nothing if None): the
+    calling thread (``RealtimePriorityError`` if not allowed) and the helper threads already
+    running (MoCap client, CAN, DDS, recorder; a thread that ended meanwhile is skipped);
+    threads started inside inherit it. After it each thread is back on the CPUs it had."""
     if cpus is None:
         yield
         return
-    previous = os.sched_getaffinity(0)
-    pin(cpus)
+    wanted = set(cpus)
+    mine = os.sched_getaffinity(0)
+    pin(wanted)
+    me, moved = threading.get_native_id(), {}
+    for tid in _threads():
+        if tid == me:
+            continue
+        try:
+            affinity = os.sched_getaffinity(tid)
+            os.sched_setaffinity(tid, wanted)
+        except OSError:  # it ended meanwhile
+            continue
+        moved[tid] = affinity
     try:
         yield
     finally:
-        os.sched_setaffinity(0, previous)
+        os.sched_setaffinity(0, mine)
+        for tid, affinity in moved.items():
+            with contextlib.suppress(OSError):
+                os.sched_setaffinity(tid, affinity)

@@ -165,16 +165,28 @@ def test_cpus_this_process_may_not_use_are_refused_on_robots_and_left_in_simulat
         assert "nmpc.cpus: CPU 1 is not available" in result.stdout
 
 
-def test_the_loop_is_pinned_inside_and_free_after() -> None:
+def test_the_loop_and_its_helper_threads_are_pinned_inside_and_free_after() -> None:
     result = _child(textwrap.dedent("""
         import os
         from deploy.runtime import realtime
         before = os.sched_getaffinity(0)
         cpu = min(before)
         assert realtime.check_cpus([cpu], "rates.loop_cpu") is None
+        # a helper thread running before the block (as the MoCap client, CAN, DDS)
+        import threading
+        started, done, helper = threading.Event(), threading.Event(), []
+        def wait():
+            helper.append(threading.get_native_id())
+            started.set()
+            done.wait()
+        threading.Thread(target=wait, daemon=True).start()
+        started.wait()
         with realtime.pinned([cpu]):
             assert os.sched_getaffinity(0) == {cpu}
+            assert os.sched_getaffinity(helper[0]) == {cpu}  # the whole process
         assert os.sched_getaffinity(0) == before
+        assert os.sched_getaffinity(helper[0]) == before
+        done.set()
         with realtime.pinned(None):
             assert os.sched_getaffinity(0) == before
         try:
