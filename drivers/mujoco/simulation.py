@@ -22,6 +22,7 @@ import mujoco
 import numpy as np
 
 from core.model.conventions import FOOT_COUNT, JOINT_COUNT, PAYLOAD_NAME
+from core.model.rotations import cross3
 from drivers.interfaces import (
     EstopStatus,
     JointCommand,
@@ -229,7 +230,7 @@ class TeamSimulation:
         payload = self.scene.payload_body_id
         torque_about_origin = data.xmat[payload].reshape(3, 3) @ generalized[a + 3:a + 6]
         lever = data.site_xpos[self.scene.robot(name).coupler_site_id] - data.xpos[payload]
-        return force_n, torque_about_origin - np.cross(lever, force_n)
+        return force_n, torque_about_origin - cross3(lever, force_n)
 
     # --- sensors -------------------------------------------------------------------------
     def _measure(self, robot: RobotIndices) -> RobotMeasurement:

@@ -35,6 +35,7 @@ from typing import TYPE_CHECKING
 import numpy as np
 
 from core.model.conventions import PAYLOAD_NAME
+from core.model.rotations import cross3
 from drivers.interfaces import Pose
 from drivers.natnet.protocol import (
     COMMAND_PORT,
@@ -335,4 +336,4 @@ def _multiply(a_wxyz: np.ndarray, b_wxyz: np.ndarray) -> np.ndarray:
     """Hamilton product a * b of quaternions (w, x, y, z)."""
     aw, av = a_wxyz[0], a_wxyz[1:]
     bw, bv = b_wxyz[0], b_wxyz[1:]
-    return np.concatenate([[aw * bw - av @ bv], aw * bv + bw * av + np.cross(av, bv)])
+    return np.concatenate([[aw * bw - av @ bv], aw * bv + bw * av + cross3(av, bv)])
