@@ -8,7 +8,8 @@ whose driver measures none, ``core.estimation.base_velocity``); in ARMED / RUNNI
 schedule (``deploy.nmpc_runtime.nmpc_schedule``: one timing grid, one plan hand-off, for a thread or
 for simulated time); ``SafetySupervisor.check``; the state's commands (posture moves, or each
 robot's WBC on the active plan), clipped when just past a torque limit; ``filter_commands``;
-send; record (``deploy.recording.loop_recording`` is the only writer of loop data). Times: the
+send; the NMPC's decision where its runner answers later (``after_send``); record
+(``deploy.recording.loop_recording`` is the only writer of loop data). Times: the
 loop clock minus the start of the run; the log uses the same times.
 
 States (``deploy.safety.supervisor``), by ``sequence``:
