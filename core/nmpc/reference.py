@@ -104,10 +104,10 @@ def robot_states_from_payload(team: TeamModel, agent: int, payload_states: np.nd
         return np.stack([cos * x - sin * y, sin * x + cos * y, np.full_like(yaw, z)], axis=1)
 
     in_robot = rotated(team.coupling_points_in_robot_m[agent])
-    point = payload[:, 0:3] + rotated(team.coupling_points_in_payload_m[agent])
+    in_payload = rotated(team.coupling_points_in_payload_m[agent])  # from the payload origin
     states = np.zeros((len(payload), STATE_SIZE))
-    states[:, 0:3] = point - in_robot
-    point_velocity = payload[:, 3:6] + cross_rows(payload[:, 9:12], point - payload[:, 0:3])
+    states[:, 0:3] = payload[:, 0:3] + in_payload - in_robot
+    point_velocity = payload[:, 3:6] + cross_rows(payload[:, 9:12], in_payload)
     omega = np.zeros((len(payload), 3))
     omega[:, 2] = payload[:, 11]  # level trunk turning with the payload
     states[:, 3:6] = point_velocity - cross_rows(omega, in_robot)
