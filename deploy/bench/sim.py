@@ -19,12 +19,11 @@ from deploy.runtime.sim_run import SimRun
 
 
 def bench_scenario(name: str, duration_s: float, executor: str, base: MpcSettings,
-                   cache: CompiledCodeCache) -> dict:
-    """Run scenario ``name`` for ``duration_s`` and return its summary plus its name."""
-    scenario = load_scenario(name)
-    scenario = scenario.model_copy(update={
-        "duration_s": min(duration_s, scenario.duration_s),
-        "controller": scenario.controller.model_copy(update={"executor": executor})})
+                   cache: CompiledCodeCache, controller: dict | None = None) -> dict:
+    """Run scenario ``name`` for ``duration_s`` and return its summary plus its name;
+    ``controller``: more ``controller`` fields to set (a modelled delay, overlapping)."""
+    scenario = load_scenario(name).with_controller(executor=executor, **(controller or {}))
+    scenario = scenario.model_copy(update={"duration_s": min(duration_s, scenario.duration_s)})
     loop = SimRun(scenario, cache, base)
     try:
         summary = loop.run()

@@ -13,7 +13,7 @@ from typing import TYPE_CHECKING
 from deploy.cli.agent_command import add_agent_parser, add_bench_agents_parser
 from deploy.cli.log_arguments import add_log_parsers
 from deploy.cli.paper_command import add_paper_parser
-from deploy.cli.sim_arguments import add_sim_parser
+from deploy.cli.sim_arguments import add_delay_arguments, add_sim_parser, delay_settings
 
 if TYPE_CHECKING:
     from core.nmpc.settings import MpcSettings
@@ -90,11 +90,12 @@ def _bench_sim(args: argparse.Namespace) -> int:
     from deploy.runtime.codegen_cache import CompiledCodeCache
 
     names = args.scenarios or shipped_scenarios()
+    delay = delay_settings(args)
     print(f"porter bench sim: {', '.join(names)}; {args.duration} s each, "
-          f"{args.executor} ADMM executor")
+          f"{args.executor} ADMM executor{''.join(f', {k} {v}' for k, v in delay.items())}")
     cache = CompiledCodeCache()
     settings = mpc_settings(args)
-    rows = [bench_scenario(name, args.duration, args.executor, settings, cache)
+    rows = [bench_scenario(name, args.duration, args.executor, settings, cache, delay)
             for name in names]
     print(format_table(rows))
     if args.json:
@@ -264,6 +265,7 @@ def build_parser() -> argparse.ArgumentParser:
                            choices=["process", "serial", "zenoh"])
     bench_sim.add_argument("--json", help="also write the rows as JSON {rows: [...]}")
     bench_sim.add_argument("--config", help="YAML file overriding MpcSettings fields")
+    add_delay_arguments(bench_sim)
     bench_sim.set_defaults(handler=_bench_sim)
 
     bench_obs = bench_kinds.add_parser("obstacles", help="moving, head-on and symmetric "

@@ -27,6 +27,7 @@ def add_sim_parser(commands: argparse._SubParsersAction,
                      help="where local solves run (zenoh: porter agents)")
     sim.add_argument("--serial", action="store_true", help="the same as --executor serial")
     sim.add_argument("--delay", action="store_true", help="apply each plan after its solve")
+    add_delay_arguments(sim)
     sim.add_argument("--quiet", action="store_true", help="no progress bar")
     sim.add_argument("--record", metavar="LOG.mcap",
                      help="flight log (default runs/<scenario>-<time>.mcap)")
@@ -40,3 +41,24 @@ def add_sim_parser(commands: argparse._SubParsersAction,
     sim.add_argument("--channel-drop", type=float, metavar="P",
                      help="ADMM messages dropped with probability P")
     sim.set_defaults(handler=handler)
+
+
+def add_delay_arguments(parser: argparse.ArgumentParser) -> None:
+    """``--delay-s`` and ``--overlap`` (``porter sim``, ``porter bench sim``)."""
+    parser.add_argument("--delay-s", type=float, metavar="S",
+                        help="apply each plan S seconds after its decision (deterministic)")
+    parser.add_argument("--overlap", action="store_true",
+                        help="with a fixed delay: the NMPC computes in its own process while "
+                        "the world steps (the same results, less wall time)")
+
+
+def delay_settings(args: argparse.Namespace) -> dict:
+    """The ``controller`` fields that ``--delay`` / ``--delay-s`` / ``--overlap`` set."""
+    controller: dict = {}
+    if getattr(args, "delay", False):
+        controller["model_computation_delay"] = True
+    if getattr(args, "delay_s", None) is not None:
+        controller.update(model_computation_delay=True, computation_delay_s=args.delay_s)
+    if getattr(args, "overlap", False):
+        controller["overlap_computation"] = True
+    return controller

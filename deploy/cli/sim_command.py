@@ -13,6 +13,7 @@ from rich.console import Console
 from rich.progress import BarColumn, Progress, TextColumn, TimeElapsedColumn
 
 from core.nmpc.settings import ChannelSettings, MpcSettings
+from deploy.cli.sim_arguments import delay_settings
 from deploy.config.files import ConfigError
 from deploy.config.scenario import Scenario, load_scenario
 from deploy.recording.flight_recorder import FlightRecorder, RecorderSettings
@@ -39,8 +40,7 @@ def scenario_from_args(args: argparse.Namespace) -> Scenario:
         raise ConfigError(f"--serial and --executor {executor} contradict each other")
     if args.serial or executor:
         controller["executor"] = executor or "serial"
-    if args.delay:
-        controller["model_computation_delay"] = True
+    controller.update(delay_settings(args))
     channel = {key: value for key, value in (
         ("max_delay_rounds", getattr(args, "channel_delay_rounds", None)),
         ("drop_probability", getattr(args, "channel_drop", None))) if value is not None}
@@ -54,7 +54,7 @@ def scenario_from_args(args: argparse.Namespace) -> Scenario:
             raise ConfigError(f"--channel: {detail['loc'][0]}: {detail['msg']} (allowed: "
                               "delay 0 to 1000 rounds, drop probability in [0, 1))") from None
     if controller:
-        update["controller"] = scenario.controller.model_copy(update=controller)
+        scenario = scenario.with_controller(**controller)
     return scenario.model_copy(update=update)
 
 

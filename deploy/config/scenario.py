@@ -127,6 +127,9 @@ class ControllerSpec(StrictModel):
     # its measured update time, or after ``computation_delay_s`` when set (deterministic).
     model_computation_delay: bool = False
     computation_delay_s: float | None = Field(None, ge=0.0, le=0.5)
+    # Simulation only, with a fixed computation_delay_s: the NMPC computes in a process of its
+    # own while the world steps (the same results; two cores do both at once).
+    overlap_computation: bool = False
     # Plan from the state predicted to the instant the plan takes effect
     # (core.nmpc.delay_compensation): "measured" uses the median of the last updates' delays
     # (0 in lockstep without model_computation_delay), a number fixes it [s], 0 turns it off.
@@ -138,6 +141,16 @@ class ControllerSpec(StrictModel):
         if not isinstance(value, str) and not 0.0 <= value <= 0.5:
             raise ValueError(f"must be 'measured' or a delay in [0, 0.5] s, got {value}")
         return value
+
+    @model_validator(mode="after")
+    def _overlap_needs_fixed_delay(self) -> ControllerSpec:
+        if self.overlap_computation and (not self.model_computation_delay
+                                         or self.computation_delay_s is None):
+            raise ValueError(
+                "overlap_computation needs model_computation_delay: true and a fixed "
+                "computation_delay_s in [0, 0.5] s (a plan computed meanwhile must take effect "
+                "at a time known in advance)")
+        return self
 
 
 class GaitSpec(StrictModel):
@@ -237,6 +250,19 @@ class Scenario(StrictModel):
         if self.payload.true_mass_kg is None:
             return self.payload.mass_kg
         return self.payload.true_mass_kg
+
+    def with_controller(self, **update: Any) -> Scenario:
+        """This scenario with ``controller`` fields replaced, validated as a whole (a conflict
+        is a ConfigError naming the field)."""
+        current = self.controller
+        try:
+            controller = ControllerSpec.model_validate(
+                {**current.model_dump(include=current.model_fields_set), **update})
+        except ValidationError as error:
+            detail = error.errors()[0]
+            where = ".".join(str(part) for part in ("controller", *detail["loc"]))
+            raise ConfigError(f"{where}: {detail['msg']}") from None
+        return self.model_copy(update={"controller": controller})
 
     def team_settings(self) -> TeamSettings:
         """The controller's team model (modelled payload mass)."""

@@ -154,6 +154,18 @@ class NmpcProcess:
                           self._on_clock(submitted, submitted_monotonic, done_monotonic),
                           error, memory)
 
+    def wait(self, timeout_s: float) -> NmpcResult:
+        """The submitted update's result, waiting up to ``timeout_s`` for it (the lockstep sim,
+        whose simulated time stands still meanwhile); NmpcProcessError if none comes."""
+        if self._pending is None:
+            raise RuntimeError("no NMPC update submitted")
+        with contextlib.suppress(EOFError, OSError):  # a broken pipe: take reports it
+            self._connection.poll(timeout_s)
+        result = self.take()
+        if result is None:
+            raise NmpcProcessError(f"the NMPC process did not answer within {timeout_s:.0f} s")
+        return result
+
     def _on_clock(self, submitted: float, submitted_monotonic: float,
                   done_monotonic: float) -> float:
         """Submit-to-done on the loop's clock: the loop clock runs at a constant rate against

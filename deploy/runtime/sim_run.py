@@ -10,7 +10,8 @@ starts standing (PREFLIGHT -> RUNNING at once) and the run ends standing at ``du
 fault (a fall, a NaN, a torque beyond its limit, repeated solver failures) ends in SAFE_STOP
 and joint damping, as on robots. With ``controller.model_computation_delay`` a plan takes
 effect only after its measured (or ``computation_delay_s``) update time has passed in
-simulated time (``deploy.nmpc_runtime.nmpc_lockstep``).
+simulated time (``deploy.nmpc_runtime.nmpc_lockstep``); with a fixed delay and
+``controller.overlap_computation`` the NMPC computes in its own process meanwhile (same results).
 
 Ground truth is read from the simulation for the metrics (``deploy.runtime.run_metrics``) and
 the log's ``/sim/ground_truth`` only, after every physics tick.
@@ -32,6 +33,7 @@ from core.nmpc.settings import MpcSettings
 from deploy.config.deploy_config import PostureConfig, RatesConfig
 from deploy.config.scenario import Scenario
 from deploy.nmpc_runtime.nmpc_lockstep import LockstepNmpc
+from deploy.nmpc_runtime.nmpc_process import NmpcProcess
 from deploy.nmpc_runtime.nmpc_schedule import NmpcSchedule
 from deploy.recording.flight_recorder import FlightRecorder
 from deploy.recording.loop_recording import LoopRecording
@@ -68,7 +70,9 @@ class SimRun:
                  supervisor_settings: SupervisorSettings | None = None) -> None:
         self.scenario = scenario
         tick_s = WBC_DECIMATION * PHYSICS_TIMESTEP_S
-        self.control = TeamController(scenario, cache, base_settings, wbc_settings, tick_s=tick_s)
+        # overlapping: the NMPC is built in its own process instead (``run``)
+        self.control = TeamController(scenario, cache, base_settings, wbc_settings, tick_s=tick_s,
+                                      build_mpc=not scenario.controller.overlap_computation)
         self.wbc_settings = self.control.wbc_settings
         self.settings = self.control.settings
         self.obstacles = self.control.obstacles
@@ -126,8 +130,10 @@ class SimRun:
         """Simulate the scenario to its end, a safe stop, or until ``stop()`` is true (checked
         every tick); returns the summary dict."""
         sim, controller = self.simulation, self.scenario.controller
+        process = (NmpcProcess(self.scenario, self.settings, self.control.cache)
+                   if controller.overlap_computation else None)
         runner = LockstepNmpc(self.control, lambda: sim.time_s, controller.model_computation_delay,
-                              controller.computation_delay_s)
+                              controller.computation_delay_s, process)
         nmpc = NmpcSchedule(self.control, runner, 1.0 / self.settings.sample_period_s,
                             lambda: sim.time_s, self.recording, self.links.force_torque,
                             has_deadline=controller.model_computation_delay, hooks=self,

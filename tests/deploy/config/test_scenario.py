@@ -287,6 +287,9 @@ BAD = [
     ("missing duration", lambda d: d.pop("duration_s"), r"duration_s: Field required"),
     ("NaN payload mass", lambda d: d["payload"].update(mass_kg=float("nan")),
      r"payload\.mass_kg: .*finite"),
+    ("overlap without a fixed delay", lambda d: d.update(controller={
+        "model_computation_delay": True, "overlap_computation": True}),
+     r"controller: .*overlap_computation needs .*computation_delay_s"),
     ("infinite obstacle speed", lambda d: d["obstacles"][0].update(
         velocity_m_s=[float("inf"), 0.0]), r"obstacles\.0\.velocity_m_s\.0: .*finite"),
 ]
@@ -336,3 +339,16 @@ def test_scenario_model_is_frozen() -> None:
     with pytest.raises(ValueError, match="frozen"):
         scenario.duration_s = 1.0  # type: ignore[misc]
     assert isinstance(scenario, Scenario)
+
+
+def test_with_controller_validates_the_whole_controller() -> None:
+    scenario = load_scenario("two_go2")
+    overlapped = scenario.with_controller(model_computation_delay=True, computation_delay_s=0.012,
+                                          overlap_computation=True, executor="serial")
+    assert overlapped.controller.overlap_computation
+    assert overlapped.controller.computation_delay_s == 0.012
+    assert overlapped.controller.executor == "serial" and scenario.controller.executor == "process"
+    with pytest.raises(ConfigError, match=r"controller: .*overlap_computation needs"):
+        scenario.with_controller(overlap_computation=True)
+    with pytest.raises(ConfigError, match=r"controller\.computation_delay_s: .*less than or equal"):
+        scenario.with_controller(model_computation_delay=True, computation_delay_s=0.9)

@@ -98,3 +98,23 @@ def test_a_dead_process_fails_the_running_update_then_refuses_the_next(run: SimR
             runner.submit(_decision(run), 4)
     finally:
         runner.close()
+
+
+def test_wait_blocks_for_the_answer_and_reports_a_dead_process(run: SimRun) -> None:
+    control = run.control
+    runner = NmpcProcess(control.scenario, control.settings, control.cache)
+    try:
+        with pytest.raises(RuntimeError, match="no NMPC update submitted"):
+            runner.wait(1.0)
+        runner.submit(_decision(run), 7)
+        answer = runner.wait(60.0)
+        assert answer.update == 7 and answer.error == "" and answer.plan is not None
+        assert not runner.busy
+        runner.submit(_decision(run, 0.05), 8)
+        runner.kill()
+        started = time.monotonic()
+        dead = runner.wait(60.0)  # the broken pipe ends the wait, not the timeout
+        assert time.monotonic() - started < 10.0
+        assert dead.plan is None and dead.update == 8 and "died" in dead.error
+    finally:
+        runner.close()

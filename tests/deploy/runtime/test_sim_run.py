@@ -2,12 +2,18 @@
 
 from __future__ import annotations
 
+import json
+import subprocess
+import sys
+from pathlib import Path
+
 import pytest
 
 from deploy.config.scenario import Scenario, load_scenario, shipped_scenarios
 from deploy.runtime.codegen_cache import CompiledCodeCache
 from deploy.runtime.sim_run import SimRun
 
+ROOT = Path(__file__).resolve().parents[3]
 # Wall-clock fields: they differ between runs by nature.
 TIMING_KEYS = {"nmpc_update_ms", "deadline_misses", "wbc_tick_ms", "real_time_factor",
                "nlp_solve_ms_median", "wall_s", "nmpc_wall_s", "wbc_wall_s",
@@ -122,3 +128,22 @@ def test_shipped_scenario_ends_as_expected_and_safely(name: str) -> None:
         assert summary["duration_s"] < scenario.duration_s
         assert any("SITTING_DOWN" in text and "no progress" in text
                    for text in summary["safety"]["transitions"])
+
+
+def test_overlapping_the_nmpc_process_gives_the_same_run() -> None:
+    """``porter sim --delay-s --overlap``: the NMPC computes in its own process while the world
+    steps; the run is the one computed in the loop's process with the same fixed delay (every
+    non-timing summary field equal). Both in fresh processes: a fresh process loads porter's
+    BLASFEO kernels (``test_nmpc_process``), as the NMPC's own process does."""
+    summaries = []
+    for overlap in ([], ["--overlap"]):
+        done = subprocess.run(
+            [sys.executable, "-m", "deploy.cli", "sim", "two_go2", "--duration", "1.0",
+             "--serial", "--delay-s", "0.012", *overlap, "--no-record", "--quiet"],
+            cwd=ROOT, capture_output=True, text=True, timeout=600, check=False)
+        assert done.returncode == 0, done.stderr
+        summaries.append(json.loads(done.stdout))
+    inline, overlapped = summaries
+    assert inline["nmpc_updates"] == 60 and inline["nmpc_plans_applied"] >= 59
+    for key in set(inline) - TIMING_KEYS:
+        assert inline[key] == overlapped[key], key
