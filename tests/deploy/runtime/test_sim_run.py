@@ -130,16 +130,18 @@ def test_shipped_scenario_ends_as_expected_and_safely(name: str) -> None:
                    for text in summary["safety"]["transitions"])
 
 
-def test_overlapping_the_nmpc_process_gives_the_same_run() -> None:
+def test_overlapping_the_nmpc_process_gives_the_same_run(tmp_path: Path) -> None:
     """``porter sim --delay-s --overlap``: the NMPC computes in its own process while the world
     steps; the run is the one computed in the loop's process with the same fixed delay (every
-    non-timing summary field equal). Both in fresh processes: a fresh process loads porter's
-    BLASFEO kernels (``test_nmpc_process``), as the NMPC's own process does."""
+    non-timing summary field equal), and its log replays (the warm starts it logged are the
+    NMPC process's). Both runs in fresh processes: a fresh process loads porter's BLASFEO
+    kernels (``test_nmpc_process``), as the NMPC's own process does."""
     summaries = []
-    for overlap in ([], ["--overlap"]):
+    log = tmp_path / "overlapped.mcap"
+    for record in (["--no-record"], ["--overlap", "--record", str(log)]):
         done = subprocess.run(
             [sys.executable, "-m", "deploy.cli", "sim", "two_go2", "--duration", "1.0",
-             "--serial", "--delay-s", "0.012", *overlap, "--no-record", "--quiet"],
+             "--serial", "--delay-s", "0.012", *record, "--quiet"],
             cwd=ROOT, capture_output=True, text=True, timeout=600, check=False)
         assert done.returncode == 0, done.stderr
         summaries.append(json.loads(done.stdout))
@@ -147,3 +149,7 @@ def test_overlapping_the_nmpc_process_gives_the_same_run() -> None:
     assert inline["nmpc_updates"] == 60 and inline["nmpc_plans_applied"] >= 59
     for key in set(inline) - TIMING_KEYS:
         assert inline[key] == overlapped[key], key
+    done = subprocess.run([sys.executable, "-m", "deploy.cli", "regress", str(log)], cwd=ROOT,
+                          capture_output=True, text=True, timeout=600, check=False)
+    assert done.returncode == 0, done.stdout + done.stderr
+    assert "60 decisions replayed" in done.stdout and "0 status mismatches" in done.stdout
