@@ -27,6 +27,10 @@ from deploy.runtime.controller import NmpcDecision, TeamController
 __all__ = ["LockstepNmpc"]
 
 PROCESS_ANSWER_TIMEOUT_S = 120.0  # wall time; an update takes milliseconds
+# Simulated time is a sum of physics steps: 0.018 + 0.012 can exceed the clock's 0.030 by
+# rounding, which handed half the plans of a 12 ms delay over a tick late (measured). Far
+# below a physics step, far above the rounding.
+HANDOVER_TOLERANCE_S = 1e-9
 
 
 class LockstepNmpc:
@@ -74,7 +78,7 @@ class LockstepNmpc:
 
     def take(self) -> NmpcResult | None:
         """The waiting result once its computation time has passed on the clock."""
-        if self._waiting is None or self.clock() < self._waiting[0]:
+        if self._waiting is None or self.clock() < self._waiting[0] - HANDOVER_TOLERANCE_S:
             return None
         _, took_s, result = self._waiting
         if result is None:  # the process's answer, on the modelled (not the wall) time

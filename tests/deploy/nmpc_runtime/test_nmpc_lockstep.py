@@ -77,3 +77,25 @@ def test_the_process_answer_is_taken_at_the_modelled_instant_only() -> None:
     assert not runner.busy and runner.take() is None
     runner.close()
     assert process.closed
+
+
+def test_a_fixed_delay_hands_over_on_its_tick_despite_the_clocks_rounding() -> None:
+    """Simulated time is a sum of 1 ms physics steps (as MuJoCo's): a 12 ms delay is handed
+    over exactly 6 ticks after its decision, every time (without the tolerance: half of them
+    a tick late, where the sum rounds below submit + delay)."""
+    process, clock = _Process(), _Clock()
+    runner = _runner(process, clock)
+    decision = cast(NmpcDecision, None)
+    gaps, submitted_tick = [], 0
+    runner.submit(decision, 0)
+    for tick in range(600):
+        result = runner.take()
+        if result is not None and result.update > 0:
+            gaps.append(tick - submitted_tick)
+        if not runner.busy and tick % 9 == 0:  # a decision every 9 ticks
+            runner.submit(decision, tick)
+            submitted_tick = tick
+        for _ in range(2):  # one 500 Hz tick: two physics steps
+            clock.t += 0.001
+    assert len(gaps) > 50
+    assert set(gaps) == {6}
