@@ -77,6 +77,44 @@ def function_key(function: ca.Function, salt: str = "") -> str:
     return digest.hexdigest()[:16]
 
 
+class InPlaceCall:
+    """An ``nlpsol`` evaluated in place through CasADi's ``Function.buffer()``: the inputs are
+    copied into preallocated arrays and the outputs land in preallocated arrays, so no CasADi
+    matrix is built per call (~0.3 ms less per RTI solve of a 416-variable agent NLP than a
+    normal call, bit-identical results; measured). One memory: one call at a time."""
+
+    def __init__(self, solver: ca.Function) -> None:
+        self.solver = solver
+        self.inputs = {name: np.zeros(solver.nnz_in(name)) for name in solver.name_in()}
+        self.outputs = {name: np.zeros(solver.nnz_out(name)) for name in solver.name_out()}
+        self._buffer, self._evaluate = solver.buffer()
+        # CasADi's Python binding takes (index, memoryview); its stubs list the C++ signature
+        for index, name in enumerate(solver.name_in()):
+            self._buffer.set_arg(index, memoryview(self.inputs[name]))  # type: ignore[call-arg, arg-type]
+        for index, name in enumerate(solver.name_out()):
+            self._buffer.set_res(index, memoryview(self.outputs[name]))  # type: ignore[call-arg, arg-type]
+
+    def __call__(self, values: dict[str, np.ndarray | None]) -> dict[str, np.ndarray]:
+        """Solve with ``values`` by input name (absent or None: zeros, the call's default);
+        returns the output arrays, overwritten by the next call (copy what is kept). Raises
+        RuntimeError where CasADi does (an evaluation error)."""
+        for name, array in self.inputs.items():
+            value = values.get(name)
+            if value is None:
+                array.fill(0.0)
+            else:
+                np.copyto(array, value)
+        # a solve that stops before writing its result must not return the previous one
+        self.outputs["x"].fill(np.nan)
+        self.outputs["f"].fill(np.nan)
+        self._evaluate()
+        return self.outputs
+
+    def stats(self) -> dict:
+        """The last call's statistics (CasADi's ``stats()``)."""
+        return self._buffer.stats()
+
+
 class NlpSolver:
     """One built solver for one problem; ``solve`` is called many times with new parameters."""
 
@@ -102,7 +140,8 @@ class NlpSolver:
                 generator.generate_dependencies(path)
 
             source = compiler.library_for(problem.name, key, generate_c)
-        self._solver = ca.nlpsol(problem.name, plugin, source, options)  # type: ignore[call-overload]
+        self._solver = InPlaceCall(
+            ca.nlpsol(problem.name, plugin, source, options))  # type: ignore[call-overload]
         # Cold-start fallback with the solver's default barrier: the small initial barrier tuned
         # for warm starts failed ~1 in 10 cold starts (measured), while the default barrier
         # converges but stops ~2 % above the optimum at tol 1e-4. So a cold start tries the
@@ -118,12 +157,10 @@ class NlpSolver:
             # (HPIPM's own robust defaults: the warm steps' barrier and tolerances not applied)
             cold["qpsol_options"] = {**qp, "hpipm": {
                 "mode": "robust", "iter_max": max(100, settings.qp_max_iterations)}}
-        self._cold_solver = (ca.nlpsol(f"{problem.name}_cold", plugin, source, cold)  # type: ignore[call-overload]
-                             if cold != options else None)
+        self._cold_solver = (InPlaceCall(ca.nlpsol(  # type: ignore[call-overload]
+            f"{problem.name}_cold", plugin, source, cold)) if cold != options else None)
         self._lbg = problem.lower_constraints
         self._ubg = problem.upper_constraints
-        # Converted once: a numpy -> DM conversion costs ~0.1 ms per vector and call.
-        self._lbg_dm, self._ubg_dm = ca.DM(self._lbg), ca.DM(self._ubg)
         self._warm_duals = settings.name != "ipopt-reference"
 
     def _options(self) -> tuple[str, dict]:
@@ -239,7 +276,7 @@ class NlpSolver:
 
     def _solve_with(
         self,
-        solver: ca.Function,
+        solver: InPlaceCall,
         initial_guess: np.ndarray,
         parameters: np.ndarray,
         lower_bounds: np.ndarray,
@@ -247,9 +284,9 @@ class NlpSolver:
         constraint_multipliers: np.ndarray | None,
         bound_multipliers: np.ndarray | None,
     ) -> NlpSolution:
-        args: dict[str, np.ndarray | ca.DM] = {
+        args: dict[str, np.ndarray | None] = {
             "x0": initial_guess, "p": parameters, "lbx": lower_bounds, "ubx": upper_bounds,
-            "lbg": self._lbg_dm, "ubg": self._ubg_dm,
+            "lbg": self._lbg, "ubg": self._ubg,
         }
         if self._warm_duals and constraint_multipliers is not None:
             args["lam_g0"] = constraint_multipliers
@@ -257,7 +294,7 @@ class NlpSolver:
                 args["lam_x0"] = bound_multipliers
         start, cpu_start = time.perf_counter(), time.process_time()
         try:
-            result = solver(**args)
+            result: dict[str, np.ndarray] | None = solver(args)
             failure = None
         except RuntimeError as error:  # evaluation errors (e.g. NaN) surface here
             result, failure = None, str(error).splitlines()[-1][:200]
@@ -268,8 +305,8 @@ class NlpSolver:
             stats = SolveStats(f"error: {failure}", False, 0, wall, float("nan"), float("inf"),
                                cpu)
             return NlpSolution(np.array(initial_guess, float), np.zeros(m), np.zeros(n), stats)
-        x = _vector(result["x"])
-        g = _vector(result["g"])
+        x = result["x"].copy()
+        g = result["g"]
         violation = float(max(
             np.max(np.maximum(g - self._ubg, 0.0), initial=0.0),
             np.max(np.maximum(self._lbg - g, 0.0), initial=0.0),
@@ -277,7 +314,7 @@ class NlpSolver:
             np.max(np.maximum(lower_bounds - x, 0.0), initial=0.0),
         ))
         raw = solver.stats()
-        objective = float(result["f"])
+        objective = float(result["f"][0])
         finite = bool(np.all(np.isfinite(x)) and np.isfinite(objective))
         status = str(raw.get("return_status", raw.get("unified_return_status", "unknown")))
         # A real-time iteration ends at its step limit by design: it succeeded when every
@@ -294,11 +331,4 @@ class NlpSolver:
             constraint_violation=violation if finite else float("inf"),
             cpu_time_s=cpu,
         )
-        return NlpSolution(
-            x, _vector(result["lam_g"]), _vector(result["lam_x"]), stats
-        )
-
-
-def _vector(value: ca.DM) -> np.ndarray:
-    """A dense CasADi column as a flat float array (half the time of ``np.asarray``)."""
-    return np.fromiter(value.elements(), dtype=float, count=value.numel())
+        return NlpSolution(x, result["lam_g"].copy(), result["lam_x"].copy(), stats)

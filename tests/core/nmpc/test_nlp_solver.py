@@ -6,11 +6,12 @@ from __future__ import annotations
 import time
 from pathlib import Path
 
+import casadi as ca
 import numpy as np
 import pytest
 
 from core.model.obstacles import Obstacle
-from core.nmpc.nlp_solver import NlpSolver
+from core.nmpc.nlp_solver import InPlaceCall, NlpSolver
 from core.nmpc.settings import MpcSettings, SafetySettings, SolverSettings
 from core.nmpc.transport_problem import build_transport_problem
 from core.nmpc.warm_start import initial_guess
@@ -133,3 +134,34 @@ def test_rti_warm_steps_take_their_qp_settings() -> None:
             > 2 * np.linalg.norm(near.decision - converged.decision))
     with pytest.raises(ValueError, match="qp_tolerance"):
         SolverSettings(qp_tolerance=2.0)
+
+
+def test_in_place_call_equals_a_normal_call_and_keeps_no_state() -> None:
+    """``InPlaceCall`` (the solver's buffered evaluation) returns what CasADi's normal call
+    returns for the same inputs, bit for bit, over a sequence of different solves (nothing of
+    one call leaks into the next); an omitted input is zeros, as in a normal call; solutions
+    do not alias the buffer the next solve overwrites."""
+    problem, (guess, parameters, lower, upper), _ = _local_problem_near_an_obstacle()
+    solver = NlpSolver(problem.nlp, SolverSettings(compiled=False))
+    plugin, options = solver._options()
+    plain = ca.nlpsol("plain", plugin, problem.nlp.casadi_dict(), options)  # type: ignore[call-overload]
+    in_place = InPlaceCall(plain)
+    rng = np.random.default_rng(3)
+    for trial in range(4):
+        values = {"x0": guess + 0.01 * trial * rng.standard_normal(guess.size), "p": parameters,
+                  "lbx": lower, "ubx": upper, "lbg": problem.nlp.lower_constraints,
+                  "ubg": problem.nlp.upper_constraints}
+        if trial % 2:
+            values["lam_g0"] = rng.standard_normal(problem.nlp.lower_constraints.size)
+        if trial == 3:
+            del values["x0"]  # a start at zero
+        expected = plain(**values)
+        got = in_place(values)
+        for name in ("x", "f", "g", "lam_x", "lam_g"):
+            np.testing.assert_array_equal(got[name], np.asarray(expected[name]).ravel(),
+                                          err_msg=f"trial {trial}: {name}")
+        assert in_place.stats()["iter_count"] == plain.stats()["iter_count"] == 1
+    first = solver.solve(guess, parameters, lower, upper)
+    kept = first.decision.copy()
+    solver.solve(guess + 0.05, parameters, lower, upper)
+    np.testing.assert_array_equal(first.decision, kept)
