@@ -112,10 +112,10 @@ def test_a_team_with_delayed_and_lost_admm_messages_reaches_the_goal(tmp_path: P
 def test_porter_deploy_runs_its_admm_agents_over_zenoh(tmp_path: Path) -> None:
     import yaml
 
-    from deploy.config.deploy_config import CONFIG_DIR
     from deploy.recording.log_reader import LogFile
+    from tests.deploy.deploy_fixtures import shipped_config_data
 
-    data = yaml.safe_load((CONFIG_DIR / "two_go2.yaml").read_text())
+    data = shipped_config_data("two_go2")  # at the tests' time scale (0.2)
     data["nmpc"] = {**data["nmpc"], "executor": "zenoh"}
     # This test is about the executor: under a loaded CI machine (the world, the NMPC, two
     # agents and the loop on two cores) the loop once stalled past the shipped 25 ms watchdog

@@ -34,28 +34,29 @@ from drivers.interfaces import JointCommand
 from drivers.mujoco.scene import build_team_scene
 from drivers.mujoco.simulation import TeamSimulation
 from drivers.robot_descriptions import load_pinocchio_model
+from tests.deploy.deploy_fixtures import shipped_config_data, write_config
 
 TWO_GO2 = CONFIG_DIR / "two_go2.yaml"
 STATES = ["PREFLIGHT", "STANDING_UP", "ARMED", "RUNNING", "SITTING_DOWN", "DONE"]
 
 
 def _config(tmp_path: Path, **changes: dict) -> Path:
-    """The shipped two-Go2 config with sections updated (merged one level deep)."""
-    data = yaml.safe_load(TWO_GO2.read_text())
+    """The shipped two-Go2 config at the tests' time scale (``TEST_TIME_SCALE``, unless
+    ``sim`` names one) with sections updated (merged one level deep)."""
+    data = shipped_config_data("two_go2")
     for section, values in changes.items():
         data[section] = {**data.get(section, {}), **values}
-    path = tmp_path / "deploy.yaml"
-    path.write_text(yaml.safe_dump(data))
-    return path
+    return write_config(data, tmp_path / "deploy.yaml")
 
 
 # --- end to end ---------------------------------------------------------------------------
 @pytest.mark.slow
 def test_deploy_on_the_sim_backend_stands_walks_carries_and_sits_down(
         tmp_path: Path, capsys: pytest.CaptureFixture[str]) -> None:
-    """The main job at the scenario's full length (16 s): it must complete, not stop itself."""
+    """The main job at the scenario's full length (16 s): it must complete, not stop itself
+    (the shipped config with the robots' safety budgets, at the tests' time scale)."""
     log_path = tmp_path / "run.mcap"
-    code = main(["deploy", "--config", str(TWO_GO2), "--backend", "sim", "--yes",
+    code = main(["deploy", "--config", str(_config(tmp_path)), "--backend", "sim", "--yes",
                  "--record", str(log_path)])
     captured = capsys.readouterr()
     assert code == 0, captured.err
@@ -91,8 +92,8 @@ def test_deploy_on_the_sim_backend_stands_walks_carries_and_sits_down(
         for kind in ("state", "command", "wbc", "wrench"):
             assert counts.get(f"/robot/{robot}/{kind}", 0) > 0, (robot, kind)
         assert counts[f"/robot/{robot}/state"] >= counts[f"/robot/{robot}/wbc"]
-    # 16 s at 60 Hz nominal, late updates skip instants: 60 Hz here at the shipped 0.2; a 2x
-    # slower machine (they differ that much) runs like 0.4 here, where the NMPC kept ~50 Hz
+    # 16 s at 60 Hz nominal, late updates skip instants: 60 Hz here at the tests' 0.2; a 2x
+    # slower machine (they differ that much) runs like 0.4 here, where the NMPC kept 60 Hz
     assert counts["/nmpc/update"] >= 16 * 30
     # every decision's outcome is logged, but for one still running when the team sat down
     assert counts["/nmpc/inputs"] - counts["/nmpc/update"] in (0, 1)
@@ -136,7 +137,7 @@ def test_deploy_on_the_sim_backend_stands_walks_carries_and_sits_down(
 @pytest.mark.slow
 def test_the_mixed_team_completes_the_full_scenario(tmp_path: Path) -> None:
     """Two Go2 + one A1 over the whole scenario: completes, sits down, reaches the goal."""
-    config = CONFIG_DIR / "two_go2_a1.yaml"
+    config = write_config(shipped_config_data("two_go2_a1"), tmp_path / "deploy.yaml")
     _, scenario = load_deploy_config(config)
     code = main(["deploy", "--config", str(config), "--backend", "sim", "--yes",
                  "--record", str(tmp_path / "run.mcap")])
@@ -379,6 +380,9 @@ def test_shipped_configs_load() -> None:
         config, scenario = load_deploy_config(path)
         assert sorted(config.robots) == sorted(agent.name for agent in scenario.team)
         assert config.network_interface is None  # loopback unless a user names one
+        # the sim backend keeps the robots' safety budgets (README: real time on two cores)
+        assert config.sim.safety_overrides == {}
+        assert config.sim_safety() == config.safety
 
 
 def test_bench_deploy_scales_a_copy_of_the_config(tmp_path: Path) -> None:

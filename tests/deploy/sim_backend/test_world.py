@@ -11,10 +11,13 @@ import time
 from deploy.config.deploy_config import load_deploy_config
 from deploy.sim_backend.backend import SimBackend
 from deploy.sim_backend.world import MAX_CATCH_UP_STEPS
+from tests.deploy.deploy_fixtures import TEST_TIME_SCALE
 
 
 def test_a_stalled_world_reports_its_hold() -> None:
     config, scenario = load_deploy_config("two_go2")
+    config = config.model_copy(update={"sim": config.sim.model_copy(
+        update={"time_scale": TEST_TIME_SCALE})})
     scale = config.sim.time_scale
     backend = SimBackend(config, scenario)
     try:
@@ -22,7 +25,7 @@ def test_a_stalled_world_reports_its_hold() -> None:
         time.sleep(0.2)
         before = backend.ground_truth()
         assert before is not None and before["physics_steps"] > 0
-        stall_wall_s = 0.06  # 12 simulated ms at the shipped 0.2: three state periods
+        stall_wall_s = 0.06  # 12 simulated ms at 0.2: three state periods
         os.kill(backend.pid, signal.SIGSTOP)
         time.sleep(stall_wall_s)
         os.kill(backend.pid, signal.SIGCONT)
