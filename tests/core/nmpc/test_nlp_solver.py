@@ -165,3 +165,20 @@ def test_in_place_call_equals_a_normal_call_and_keeps_no_state() -> None:
     kept = first.decision.copy()
     solver.solve(guess + 0.05, parameters, lower, upper)
     np.testing.assert_array_equal(first.decision, kept)
+
+
+def test_a_nan_parameter_fails_the_solve_without_raising_and_poisons_nothing() -> None:
+    """A NaN in the parameters is a failed solve (reported, not raised); the solve after it,
+    on good inputs through the same in-place buffers, equals a fresh solver's."""
+    problem, (guess, parameters, lower, upper), _ = _local_problem_near_an_obstacle()
+    solver = NlpSolver(problem.nlp, SolverSettings(compiled=False))
+    bad = parameters.copy()
+    bad[0] = np.nan
+    failed = solver.solve(guess, bad, lower, upper)
+    assert not failed.stats.success
+    after = solver.solve(guess, parameters, lower, upper)
+    fresh = NlpSolver(problem.nlp, SolverSettings(compiled=False)).solve(
+        guess, parameters, lower, upper)
+    assert after.stats.success
+    np.testing.assert_array_equal(after.decision, fresh.decision)
+    np.testing.assert_array_equal(after.constraint_multipliers, fresh.constraint_multipliers)
