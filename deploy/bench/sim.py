@@ -18,11 +18,14 @@ from deploy.runtime.codegen_cache import CompiledCodeCache
 from deploy.runtime.sim_run import SimRun
 
 
-def bench_scenario(name: str, duration_s: float, executor: str, base: MpcSettings,
+def bench_scenario(name: str, duration_s: float, executor: str | None, base: MpcSettings,
                    cache: CompiledCodeCache, controller: dict | None = None) -> dict:
     """Run scenario ``name`` for ``duration_s`` and return its summary plus its name;
-    ``controller``: more ``controller`` fields to set (a modelled delay, overlapping)."""
-    scenario = load_scenario(name).with_controller(executor=executor, **(controller or {}))
+    ``executor``: None for the scenario's own (``ControllerSpec``: process, serial when
+    overlapping); ``controller``: more ``controller`` fields to set (a modelled delay,
+    overlapping)."""
+    update = dict(controller or {}) | ({} if executor is None else {"executor": executor})
+    scenario = load_scenario(name).with_controller(**update)
     scenario = scenario.model_copy(update={"duration_s": min(duration_s, scenario.duration_s)})
     loop = SimRun(scenario, cache, base)
     try:
@@ -30,6 +33,7 @@ def bench_scenario(name: str, duration_s: float, executor: str, base: MpcSetting
     finally:
         loop.close()
     summary["robots"] = len(scenario.team)
+    summary["executor"] = scenario.controller.executor
     return summary
 
 

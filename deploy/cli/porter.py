@@ -90,9 +90,9 @@ def _bench_sim(args: argparse.Namespace) -> int:
     from deploy.runtime.codegen_cache import CompiledCodeCache
 
     names = args.scenarios or shipped_scenarios()
-    delay = delay_settings(args)
-    print(f"porter bench sim: {', '.join(names)}; {args.duration} s each, "
-          f"{args.executor} ADMM executor{''.join(f', {k} {v}' for k, v in delay.items())}")
+    delay, executor = delay_settings(args), args.executor or "default"
+    print(f"porter bench sim: {', '.join(names)}; {args.duration} s each, {executor} ADMM "
+          f"executor{''.join(f', {k} {v}' for k, v in delay.items())}")
     cache = CompiledCodeCache()
     settings = mpc_settings(args)
     rows = [bench_scenario(name, args.duration, args.executor, settings, cache, delay)
@@ -261,8 +261,8 @@ def build_parser() -> argparse.ArgumentParser:
     bench_sim.add_argument("scenarios", nargs="*", help="scenario names (default: all shipped)")
     bench_sim.add_argument("--duration", type=positive_number, default=5.0,
                            help="simulated seconds per scenario")
-    bench_sim.add_argument("--executor", default="process",
-                           choices=["process", "serial", "zenoh"])
+    bench_sim.add_argument("--executor", choices=["process", "serial", "zenoh"],
+                           help="default: process; serial with --overlap")
     bench_sim.add_argument("--json", help="also write the rows as JSON {rows: [...]}")
     bench_sim.add_argument("--config", help="YAML file overriding MpcSettings fields")
     add_delay_arguments(bench_sim)

@@ -128,7 +128,9 @@ class ControllerSpec(StrictModel):
     model_computation_delay: bool = False
     computation_delay_s: float | None = Field(None, ge=0.0, le=0.5)
     # Simulation only, with a fixed computation_delay_s: the NMPC computes in a process of its
-    # own while the world steps (the same results; two cores do both at once).
+    # own while the world steps (the same results; two cores do both at once). Its executor
+    # defaults to serial then (README, porter bench sim: an ADMM worker beside the NMPC's
+    # process and the world is a third busy process for two cores); a set executor wins.
     overlap_computation: bool = False
     # Plan from the state predicted to the instant the plan takes effect
     # (core.nmpc.delay_compensation): "measured" uses the median of the last updates' delays
@@ -141,6 +143,14 @@ class ControllerSpec(StrictModel):
         if not isinstance(value, str) and not 0.0 <= value <= 0.5:
             raise ValueError(f"must be 'measured' or a delay in [0, 0.5] s, got {value}")
         return value
+
+    @model_validator(mode="before")
+    @classmethod
+    def _overlap_defaults_to_serial(cls, data: Any) -> Any:
+        if isinstance(data, dict) and data.get("overlap_computation") is True \
+                and "executor" not in data:
+            return {**data, "executor": "serial"}
+        return data
 
     @model_validator(mode="after")
     def _overlap_needs_fixed_delay(self) -> ControllerSpec:

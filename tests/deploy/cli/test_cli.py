@@ -114,6 +114,7 @@ def test_bench_sim_prints_the_table_and_json(tmp_path: Path,
     (row,) = json.loads(out.read_text())["rows"]
     assert row["real_time_factor"] > 0 and row["nmpc_wall_s"] > 0 and row["wbc_wall_s"] > 0
     assert row["nmpc_wall_s"] + row["wbc_wall_s"] < row["wall_s"]
+    assert row["executor"] == "serial"
 
 
 def test_overlap_without_a_fixed_delay_is_refused_naming_the_fields(
@@ -124,10 +125,15 @@ def test_overlap_without_a_fixed_delay_is_refused_naming_the_fields(
     assert "controller.computation_delay_s" in capsys.readouterr().err
 
 
-def test_bench_sim_overlapped_reports_its_delay(capsys: pytest.CaptureFixture) -> None:
-    code = main(["bench", "sim", "two_go2", "--duration", "0.3", "--executor", "serial",
-                 "--delay-s", "0.012", "--overlap"])
+def test_bench_sim_overlapped_reports_its_delay(tmp_path: Path,
+                                               capsys: pytest.CaptureFixture) -> None:
+    """Overlapped without ``--executor``: the scenario's default for it, serial."""
+    out = tmp_path / "bench_sim.json"
+    code = main(["bench", "sim", "two_go2", "--duration", "0.3", "--delay-s", "0.012",
+                 "--overlap", "--json", str(out)])
     assert code == 0
     printed = capsys.readouterr().out
     assert "computation_delay_s 0.012, overlap_computation True" in printed
     assert "two_go2" in printed and "RTF" in printed
+    (row,) = json.loads(out.read_text())["rows"]
+    assert row["executor"] == "serial"

@@ -350,5 +350,12 @@ def test_with_controller_validates_the_whole_controller() -> None:
     assert overlapped.controller.executor == "serial" and scenario.controller.executor == "process"
     with pytest.raises(ConfigError, match=r"controller: .*overlap_computation needs"):
         scenario.with_controller(overlap_computation=True)
+    # overlapped, the executor defaults to serial; a set executor wins
+    delay = {"model_computation_delay": True, "computation_delay_s": 0.012,
+             "overlap_computation": True}
+    assert scenario.with_controller(**delay).controller.executor == "serial"
+    assert scenario.with_controller(**delay, executor="process").controller.executor == "process"
+    explicit = scenario.with_controller(executor="process")
+    assert explicit.with_controller(**delay).controller.executor == "process"
     with pytest.raises(ConfigError, match=r"controller\.computation_delay_s: .*less than or equal"):
         scenario.with_controller(model_computation_delay=True, computation_delay_s=0.9)
