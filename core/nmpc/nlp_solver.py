@@ -84,7 +84,6 @@ class InPlaceCall:
     normal call, bit-identical results; measured). One memory: one call at a time."""
 
     def __init__(self, solver: ca.Function) -> None:
-        self.solver = solver
         self.inputs = {name: np.zeros(solver.nnz_in(name)) for name in solver.name_in()}
         self.outputs = {name: np.zeros(solver.nnz_out(name)) for name in solver.name_out()}
         self._buffer, self._evaluate = solver.buffer()
