@@ -44,6 +44,14 @@ def rotation_from_quaternion_wxyz(quaternion: np.ndarray) -> np.ndarray:
     ])
 
 
+def yaw_from_quaternion_wxyz(quaternion: np.ndarray) -> float:
+    """Yaw [rad] of a (w, x, y, z) quaternion: ``euler_from_rotation(
+    rotation_from_quaternion_wxyz(q))[2]`` to the bit (the same operations, NumPy's arctan2,
+    which differs from libm's in the last bit), at a quarter of its cost (no matrix)."""
+    w, x, y, z = (np.asarray(quaternion, dtype=float) / np.linalg.norm(quaternion)).tolist()
+    return float(np.arctan2(2 * (x * y + w * z), 1 - 2 * (y * y + z * z)))
+
+
 def cross3(a: np.ndarray, b: np.ndarray) -> np.ndarray:
     """a x b of two 3-vectors: the same arithmetic as ``np.cross`` (so the same bits), without
     its general-axis machinery (~30 us a call with NumPy 2, this ~1.5 us) on the 500 Hz path."""

@@ -279,7 +279,9 @@ class ControlLoop:
                 self.supervisor.wbc_ticked(t, name, step.output.success, step.output.status)
             if self.hooks is not None:
                 self.hooks.wbc_stepped(steps)
-            steps = [replace(step, command=self._saturate(name, step.command, measurements[name]))
+            # a new step only where clipped: dataclasses.replace costs ~10 us a robot
+            steps = [step if (command := self._saturate(name, step.command, measurements[name]))
+                     is step.command else replace(step, command=command)
                      for name, step in zip(self.names, steps, strict=True)]
             return {n: step.command for n, step in zip(self.names, steps, strict=True)}, steps
         return {}, None

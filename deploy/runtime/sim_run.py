@@ -27,7 +27,11 @@ import numpy as np
 from core.locomotion.settings import WbcSettings
 from core.locomotion.whole_body_control import FloatingBaseState
 from core.model.conventions import PAYLOAD_NAME
-from core.model.rotations import euler_from_rotation, rotation_from_quaternion_wxyz
+from core.model.rotations import (
+    euler_from_rotation,
+    rotation_from_quaternion_wxyz,
+    yaw_from_quaternion_wxyz,
+)
 from core.nmpc.mpc_plan import MpcPlan
 from core.nmpc.settings import MpcSettings
 from deploy.config.deploy_config import PostureConfig, RatesConfig
@@ -199,7 +203,7 @@ class SimRun:
         """Metrics (and the log's ground truth) from the simulator's state at ``t``."""
         sim = self.simulation
         position, quaternion = sim.payload_pose()
-        yaw = float(euler_from_rotation(rotation_from_quaternion_wxyz(quaternion))[2])
+        yaw = yaw_from_quaternion_wxyz(quaternion)
         desired = self.control.reference.payload_state(self.control.reference_time(t))
         bodies = [position[0:2]]
         sitting = self.loop is not None and self.loop.controlled_stop

@@ -78,7 +78,7 @@ class TeamSimulation:
         self._actuator_ids = np.concatenate([r.actuator_ids for r in scene.robots])
         ctrlrange = self.model.actuator_ctrlrange[self._actuator_ids]
         self._ctrl_low, self._ctrl_high = ctrlrange[:, 0], ctrlrange[:, 1]
-        self._stacked_command = np.zeros((5, len(self._actuator_ids)))
+        self._stacked_command: np.ndarray | None = np.zeros((5, len(self._actuator_ids)))
         self._coupling_ids = {r.name: self.model.equality(f"{r.name}/coupling").id
                               for r in scene.robots}
         # geom id -> 1 + 4 x its robot's index + its foot index (LEG_NAMES order), 0 for any
@@ -127,15 +127,16 @@ class TeamSimulation:
     def set_command(self, name: str, command: JointCommand) -> None:
         """Store robot ``name``'s joint command; applied from the next physics step on."""
         self._commands[self.scene.robot(name).name] = command
-        stacked = [np.concatenate([getattr(self._commands[r.name], field)
-                                   for r in self.scene.robots])
-                   for field in ("torque_nm", "position_rad", "velocity_rad_s", "kp", "kd")]
-        self._stacked_command = np.array(stacked)
+        self._stacked_command = None  # stacked by the next step, once for all robots
 
     # --- stepping ------------------------------------------------------------------------
     def step(self, count: int = 1) -> None:
         """Advance ``count`` physics steps, re-evaluating the motor law before each."""
         data = self.data
+        if self._stacked_command is None:
+            self._stacked_command = np.array([
+                np.concatenate([getattr(self._commands[r.name], field) for r in self.scene.robots])
+                for field in ("torque_nm", "position_rad", "velocity_rad_s", "kp", "kd")])
         torque, position, velocity, kp, kd = self._stacked_command
         scene = self.scene
         moving = scene.obstacles_move
