@@ -98,18 +98,18 @@ class DistributedMpc:
         start = time.perf_counter()
         na = self.team.agent_count
         iterations = iterations or self.settings.admm.iterations
-        inputs.validate(na, self.settings.horizon_steps, self.settings.safety.max_obstacles)
+        self.problem.validate(inputs)  # once: the problem's own checks below are skipped
         guesses = [initial_guess(self.problem, self.team, inputs, self._previous[i], agent=i)
                    for i in range(na)]
         bounds = [self.problem.decision_bounds(inputs.contacts, agent=i, inputs=inputs)
                   for i in range(na)]
         # Everything but the consensus target is fixed during the update: build it once.
         zero_target = np.zeros(self.weights.size)
-        selections = [self.problem.select_obstacles(inputs, guesses[i], agent=i)
+        selections = [self.problem.select_obstacles(inputs, guesses[i], agent=i, validated=True)
                       for i in range(na)]
         parameters = [self.problem.parameter_vector(self.team, inputs, agent=i,
                                                     consensus_target=zero_target,
-                                                    selection=selections[i])
+                                                    selection=selections[i], validated=True)
                       for i in range(na)]
         target_slice = self.problem.nlp.parameters.slice("consensus_target")
         if self._consensus is None:

@@ -46,11 +46,11 @@ class CentralizedMpc:
 
     def update(self, inputs: MpcInputs) -> MpcPlan:
         start = time.perf_counter()
-        inputs.validate(self.team.agent_count, self.settings.horizon_steps,
-                        self.settings.safety.max_obstacles)
+        self.problem.validate(inputs)  # once: the problem's own checks below are skipped
         guess = initial_guess(self.problem, self.team, inputs, self._previous, agent=None)
-        selection = self.problem.select_obstacles(inputs, guess)
-        parameters = self.problem.parameter_vector(self.team, inputs, selection=selection)
+        selection = self.problem.select_obstacles(inputs, guess, validated=True)
+        parameters = self.problem.parameter_vector(self.team, inputs, selection=selection,
+                                                   validated=True)
         lower, upper = self.problem.decision_bounds(inputs.contacts, inputs=inputs)
         previous = self._previous
         lam_g, lam_x = (None, None) if previous is None else shifted_multipliers(

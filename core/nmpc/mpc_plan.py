@@ -109,14 +109,14 @@ def decode_plan(problem: TransportProblem, team: TeamModel, decision: np.ndarray
     layout = problem.nlp.decision
     n = problem.horizon_steps
     na = team.agent_count
+    values = np.asarray(decision)
     robots = np.zeros((na, n + 1, 12))
     grfs = np.zeros((na, n, 12))
     for key, r in zip(problem.robot_keys(), problem.robot_indices(agent), strict=True):
-        robots[r] = [layout.get(decision, f"robot_{key}@{k}") for k in range(n + 1)]
-        grfs[r] = [layout.get(decision, f"grf_{key}@{k}") for k in range(n)]
-    payload = np.array([layout.get(decision, f"payload@{k}") for k in range(n + 1)])
-    wrenches = np.array([[layout.get(decision, f"wrench_{j}@{k}") for k in range(n)]
-                         for j in range(na)])
+        robots[r] = values[layout.stage_rows(f"robot_{key}", n + 1)]
+        grfs[r] = values[layout.stage_rows(f"grf_{key}", n)]
+    payload = values[layout.stage_rows("payload", n + 1)]
+    wrenches = np.array([values[layout.stage_rows(f"wrench_{j}", n)] for j in range(na)])
     return MpcPlan(
         grf=grfs[:, 0].copy(), wrench=wrenches[:, 0].copy(), robot_trajectories=robots,
         payload_trajectory=payload, grf_trajectories=grfs, wrench_trajectories=wrenches,

@@ -39,7 +39,7 @@ from core.model.srb_model import (
 )
 from core.model.team import TeamModel
 from core.nmpc.cbf import OBSTACLE_PARAMETER_SIZE, stagewise_first_order, stagewise_hocbf
-from core.nmpc.layout import BlockLayout, DecisionRows
+from core.nmpc.layout import DecisionRows, shared_indices
 from core.nmpc.mpc_inputs import MpcInputs
 from core.nmpc.obstacle_selection import ObstacleSelection, select_obstacles
 from core.nmpc.settings import MpcSettings
@@ -102,6 +102,10 @@ class TransportProblem:
     def consensus_weights(self) -> np.ndarray:
         return consensus_weights(self.settings, self.agent_count)
 
+    def validate(self, inputs: MpcInputs) -> None:
+        """``inputs.validate`` for this problem's team, horizon and obstacle capacity."""
+        inputs.validate(self.agent_count, self.horizon_steps, self.settings.safety.max_obstacles)
+
     def decision_bounds(self, contacts: np.ndarray, agent: int | None = None,
                         inputs: MpcInputs | None = None) -> tuple[np.ndarray, np.ndarray]:
         """lbx, ubx: 0 <= f_z <= f_max on stance feet, 0 <= f_z <= 1e-5 N on swing feet,
@@ -159,11 +163,14 @@ class TransportProblem:
                                         for k in range(self.horizon_steps)))
 
     def select_obstacles(self, inputs: MpcInputs, guess: np.ndarray | None = None,
-                         agent: int | None = None) -> ObstacleSelection:
+                         agent: int | None = None, validated: bool = False
+                         ) -> ObstacleSelection:
         """The obstacles this problem constrains at this update: the ``obstacle_slots`` with
         the smallest predicted h over its bodies along the reference and, if given, the warm
-        start ``guess`` (``core.nmpc.obstacle_selection``)."""
-        inputs.validate(self.agent_count, self.horizon_steps, self.settings.safety.max_obstacles)
+        start ``guess`` (``core.nmpc.obstacle_selection``). ``validated``: the caller has
+        validated ``inputs`` for this problem (else they are, first)."""
+        if not validated:
+            self.validate(inputs)
         paths = [np.vstack([inputs.payload_state[None, 0:2], inputs.payload_reference[:, 0:2]])]
         if guess is not None:
             paths.append(np.asarray(guess)[self._rows.payload_state[:, None] + [0, 1]])
@@ -183,12 +190,15 @@ class TransportProblem:
         agent: int | None = None,
         consensus_target: np.ndarray | None = None,
         selection: ObstacleSelection | None = None,
+        validated: bool = False,
     ) -> np.ndarray:
-        """Numeric parameter vector for ``inputs`` (validated first). ``selection``: the
-        obstacles in the slots (default: chosen along the reference alone)."""
+        """Numeric parameter vector for ``inputs`` (validated first unless ``validated``, as
+        in ``select_obstacles``). ``selection``: the obstacles in the slots (default: chosen
+        along the reference alone)."""
         if team.agent_count != self.agent_count:
             raise ValueError(f"team has {team.agent_count} agents, problem {self.agent_count}")
-        inputs.validate(self.agent_count, self.horizon_steps, self.settings.safety.max_obstacles)
+        if not validated:
+            self.validate(inputs)
         layout = self.nlp.parameters
         values = np.zeros(layout.size)
         for key, r in zip(self.robot_keys(), self.robot_indices(agent), strict=True):
@@ -208,7 +218,7 @@ class TransportProblem:
         layout.put(values, "ref_payload", inputs.payload_reference)
         slots = self.settings.safety.obstacle_slots
         if selection is None:
-            selection = self.select_obstacles(inputs, None, agent)
+            selection = self.select_obstacles(inputs, None, agent, validated=True)
         layout.put(values, "obstacles", selection.parameters(inputs.obstacles, slots))
         if self.local:
             layout.put(values, "self_selector", np.eye(self.agent_count)[self._agent(agent)])
@@ -385,13 +395,3 @@ def consensus_weights(settings: MpcSettings, agent_count: int) -> np.ndarray:
         np.full(n * WRENCH_SIZE * agent_count, admm.rho_wrench),
     ])
 
-
-def shared_indices(decision: BlockLayout, horizon_steps: int, agent_count: int
-                   ) -> np.ndarray:
-    """Where the shared trajectory s (``TransportProblem.shared_trajectory``) sits in a local
-    or centralized decision vector laid out by ``decision``: ``solution[indices]`` is s."""
-    n = horizon_steps
-    names = [f"payload@{k}" for k in range(1, n + 1)]
-    names += [f"wrench_{j}@{k}" for j in range(agent_count) for k in range(n)]
-    whole = np.arange(decision.size)
-    return np.concatenate([decision.get(whole, name) for name in names])

@@ -62,17 +62,18 @@ def conform_forces(
     gravity_m_s2: float,
     minimum_stance_force_n: float = 1.0,
 ) -> None:
-    """In place: zero GRFs on swing feet, nominal force on unloaded stance feet, per stage."""
-    for k, flags in enumerate(np.asarray(contacts, dtype=float)):
-        block = layout.slice(f"{grf_block}@{k}")
-        forces = guess[block].reshape(4, 3)
-        nominal = nominal_foot_forces(flags, supported_mass_kg, gravity_m_s2).reshape(4, 3)
-        for leg in range(4):
-            if flags[leg] == 0.0:
-                forces[leg] = 0.0
-            elif forces[leg, 2] < minimum_stance_force_n:
-                forces[leg] = nominal[leg]
-        guess[block] = forces.reshape(-1)
+    """In place: zero GRFs on swing feet, nominal force (``nominal_foot_forces``) on unloaded
+    stance feet, per stage; every stage at once (``contacts`` (N, 4) flags)."""
+    flags = np.asarray(contacts, dtype=float)
+    rows = layout.stage_rows(grf_block, len(flags))
+    forces = guess[rows].reshape(-1, 4, 3)
+    nominal_z = flags * supported_mass_kg * gravity_m_s2 / np.maximum(flags.sum(axis=1), 1.0)[
+        :, None]
+    swing = flags == 0.0
+    unloaded = ~swing & (forces[:, :, 2] < minimum_stance_force_n)
+    forces[swing | unloaded] = 0.0
+    forces[:, :, 2] = np.where(unloaded, nominal_z, forces[:, :, 2])
+    guess[rows] = forces.reshape(rows.shape)
 
 
 def initial_guess(

@@ -25,7 +25,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from core.nmpc.admm_executor import LocalSolverSpec, run_agent_admm, solve_request
-from core.nmpc.transport_problem import shared_indices
+from core.nmpc.layout import shared_indices
 from deploy.agents import wire
 from deploy.agents.zenoh_session import (
     concrete_endpoint,

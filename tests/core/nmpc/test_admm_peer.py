@@ -16,7 +16,7 @@ from core.nmpc.admm_executor import (
     run_agent_admm,
 )
 from core.nmpc.admm_mpc import DistributedMpc
-from core.nmpc.transport_problem import shared_indices
+from core.nmpc.layout import shared_indices
 from tests.core.controller_fixtures import inputs_at_start, settings, team
 
 

@@ -68,3 +68,18 @@ def test_failed_solve_is_reported_not_raised() -> None:
     assert not plan.success
     assert not plan.solves[0].success
     assert np.all(np.isfinite(plan.grf))
+
+
+def test_the_problem_validates_unless_told_its_caller_did(controller: CentralizedMpc) -> None:
+    # the controllers validate once and tell the problem so; a direct caller is still checked
+    inputs = inputs_at_start(controller.team, controller.settings)
+    state = inputs.payload_state.copy()
+    state[0] = np.inf
+    bad = dataclasses.replace(inputs, payload_state=state)
+    problem = controller.problem
+    with pytest.raises(InvalidMpcInputError, match="payload_state: contains NaN or infinite"):
+        problem.select_obstacles(bad)
+    with pytest.raises(InvalidMpcInputError, match="payload_state: contains NaN or infinite"):
+        problem.parameter_vector(controller.team, bad)
+    with pytest.raises(InvalidMpcInputError, match="payload_state: contains NaN or infinite"):
+        problem.validate(bad)

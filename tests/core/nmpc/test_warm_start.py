@@ -1,14 +1,21 @@
-"""Warm start: multipliers shift with the same stage map as the primal."""
+"""Warm start: multipliers shift with the same stage map as the primal; the guess's forces
+follow the contact schedule; plans decode from stacked rows as block by block."""
 
 from __future__ import annotations
 
 import numpy as np
 import pytest
 
+from core.nmpc.mpc_plan import decode_plan
 from core.nmpc.nlp_solver import NlpSolution, SolveStats
 from core.nmpc.transport_problem import TransportProblem, build_transport_problem
-from core.nmpc.warm_start import shift_solution, shifted_multipliers
-from tests.core.controller_fixtures import settings
+from core.nmpc.warm_start import (
+    conform_forces,
+    nominal_foot_forces,
+    shift_solution,
+    shifted_multipliers,
+)
+from tests.core.controller_fixtures import settings, team
 
 
 @pytest.fixture(scope="module")
@@ -61,3 +68,48 @@ def test_multipliers_shift_one_stage_like_the_primal(problem: TransportProblem) 
     np.testing.assert_array_equal(shifted_x, shift_solution(nlp.decision, n, lam_x))
     np.testing.assert_array_equal(nlp.decision.get(shifted_x, "grf_self@0"),
                                   nlp.decision.get(lam_x, "grf_self@1"))
+
+
+def _conform_stage_by_stage(guess: np.ndarray, problem: TransportProblem, contacts: np.ndarray,
+                            mass_kg: float, g: float) -> None:
+    """The rule per stage and leg, as written down (the reference)."""
+    layout = problem.nlp.decision
+    for k, flags in enumerate(contacts):
+        block = layout.slice(f"grf_self@{k}")
+        forces = guess[block].reshape(4, 3)
+        nominal = nominal_foot_forces(flags, mass_kg, g).reshape(4, 3)
+        for leg in range(4):
+            if flags[leg] == 0.0:
+                forces[leg] = 0.0
+            elif forces[leg, 2] < 1.0:
+                forces[leg] = nominal[leg]
+        guess[block] = forces.reshape(-1)
+
+
+def test_forces_conform_to_the_schedule_as_stage_by_stage(problem: TransportProblem) -> None:
+    rng = np.random.default_rng(3)
+    n, layout = problem.horizon_steps, problem.nlp.decision
+    for trial in range(50):
+        guess = rng.normal(scale=40.0, size=layout.size)
+        guess[rng.random(layout.size) < 0.05] = np.nan  # NaN forces stay as they are
+        contacts = (rng.random((n, 4)) < 0.6).astype(float)
+        contacts[trial % n] = 0.0  # a stage with every foot in the air
+        expected = guess.copy()
+        _conform_stage_by_stage(expected, problem, contacts, 17.3, 9.81)
+        conform_forces(guess, layout, "grf_self", contacts, 17.3, 9.81)
+        np.testing.assert_array_equal(guess, expected)
+
+
+def test_plans_decode_from_stacked_rows_as_block_by_block(problem: TransportProblem) -> None:
+    decision = np.random.default_rng(5).normal(size=problem.nlp.decision.size)
+    layout, n = problem.nlp.decision, problem.horizon_steps
+    plan = decode_plan(problem, team(), decision, agent=1)
+    for k in range(n + 1):
+        assert np.array_equal(plan.robot_trajectories[1, k], layout.get(decision, f"robot_self@{k}"))
+        assert np.array_equal(plan.payload_trajectory[k], layout.get(decision, f"payload@{k}"))
+    for k in range(n):
+        assert np.array_equal(plan.grf_trajectories[1, k], layout.get(decision, f"grf_self@{k}"))
+        for j in range(2):
+            assert np.array_equal(plan.wrench_trajectories[j, k],
+                                  layout.get(decision, f"wrench_{j}@{k}"))
+    assert not plan.robot_trajectories[0].any()  # agent 0's trajectory is not in this problem
