@@ -116,6 +116,10 @@ class SimRun:
         self._pushes = sorted(scenario.disturbances.pushes, key=lambda p: p.time_s)
         self._tick_wall_s: float | None = None
         self.loop: ControlLoop | None = None
+        # zero velocities of the ground truth's base states (read-only: shared by every tick)
+        self._still = (np.zeros(3), np.zeros(12))
+        for zeros in self._still:
+            zeros.flags.writeable = False
 
     def attach_recorder(self, recorder: FlightRecorder) -> None:
         """Record the run to ``recorder`` (what and when: ``deploy.recording.loop_recording``)."""
@@ -207,11 +211,11 @@ class SimRun:
         desired = self.control.reference.payload_state(self.control.reference_time(t))
         bodies = [position[0:2]]
         sitting = self.loop is not None and self.loop.controlled_stop
+        still3, still12 = self._still
         for robot in self.control.robots:
             base_position, base_quaternion = sim.base_pose(robot.name)
             state = robot.wbc.srb_state(FloatingBaseState(
-                base_position, base_quaternion, np.zeros(3), np.zeros(3), np.zeros(12),
-                np.zeros(12)))
+                base_position, base_quaternion, still3, still3, still12, still12))
             bodies.append(state[0:2])
             nominal = robot.legs.robot.nominal_height_m
             # A controlled stop sits the team down on purpose: then only a tilt is a fall.
@@ -219,11 +223,12 @@ class SimRun:
             if low or max(abs(state[6]), abs(state[7])) > MAX_TILT_RAD:
                 self.metrics.record_fall(robot.name)
         centers = self._obstacle_start_m + t * self._obstacle_velocity_m_s  # Obstacle.row's
-        offsets = np.array(bodies)[:, None, :] - centers[None, :, :]
+        body_xy_m = np.array(bodies)
+        offsets = body_xy_m[:, None, :] - centers[None, :, :]
         h = (np.sqrt(np.einsum("bok,bok->bo", offsets, offsets))
              - self.settings.safety.safety_distance_m - self._obstacle_radius_m)
         coupling = np.array([sim.coupling_error_m(r.name) for r in self.control.robots])
-        self.metrics.body_xy_m.append(np.array(bodies))
+        self.metrics.body_xy_m.append(body_xy_m)
         self.metrics.record_ground_truth(t, position[0:2], yaw, desired[0:2], desired[8], h,
                                          coupling)
         if self.recording is not None and self.recording.ground_truth_due(t):

@@ -127,8 +127,9 @@ def robot_limits(robot_type: str, name: str) -> RobotLimits:
 # --- faults of one robot's measurement ----------------------------------------------------
 def non_finite_fault(name: str, measurement: RobotMeasurement) -> str | None:
     """The first NaN/inf entry of any field of ``measurement``."""
-    everything = np.concatenate([np.ravel(getattr(measurement, name))
-                                 for name in _MEASUREMENT_FIELDS], dtype=float)
+    # axis None flattens every field (scalars too) in one call: no ravel per field
+    everything = np.concatenate([getattr(measurement, name) for name in _MEASUREMENT_FIELDS],
+                                axis=None, dtype=float)
     if np.isfinite(everything).all():  # the common case: one check
         return None
     for field in fields(measurement):
