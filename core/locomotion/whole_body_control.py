@@ -154,6 +154,7 @@ class WholeBodyController:
                                  self.coupling_in_base_m, foot_radius_m, self.torque_limit_nm,
                                  compiler, *structural_patterns(model, self.foot_frame_ids))
         self._zero_acceleration = np.zeros(model.nv)
+        self._foot_frames = np.zeros((len(self.foot_frame_ids), 3))  # of the last ``_feet``
         self._conversion = StateConversion(self.com_offset_in_base_m, compiler)
         # a second converter off the tick's path (``srb_state``, ``pinocchio_state``): its
         # calls never overwrite the arrays ``observe`` hands to this tick's ``compute``
@@ -181,7 +182,12 @@ class WholeBodyController:
         return self._feet()
 
     def _feet(self) -> np.ndarray:
-        feet = np.array([self.data.oMf[i].translation for i in self.foot_frame_ids])
+        """Contact points (4, 3) [m] from the frames' placements; the frames themselves stay in
+        ``_foot_frames`` (``compute`` reads them there)."""
+        frames = self._foot_frames
+        for leg, frame_id in enumerate(self.foot_frame_ids):
+            frames[leg] = self.data.oMf[frame_id].translation
+        feet = frames.copy()
         feet[:, 2] -= self.foot_radius_m
         return feet
 
@@ -210,19 +216,19 @@ class WholeBodyController:
             q, v, rotation, _ = self._conversion(state)
             pin.computeAllTerms(model, data, q, v)
             pin.updateFramePlacements(model, data)  # the swing feet's placements (oMf)
+            self._feet()
         views = self._qp.views
         views["mass"][:] = data.M  # upper triangle filled; the assembly mirrors it
         bias = views["bias"]
         bias[:] = data.nle
         pin.forwardKinematics(model, data, q, v, self._zero_acceleration)  # data.a = Jdot v
         world = pin.ReferenceFrame.LOCAL_WORLD_ALIGNED
-        jacobian, drift, frame = (views["contact_jacobian"], views["foot_drift"],
-                                  views["foot_frame"])
+        jacobian, drift = views["contact_jacobian"], views["foot_drift"]
         for leg, frame_id in enumerate(self.foot_frame_ids):
             rows = slice(3 * leg, 3 * leg + 3)
             jacobian[rows] = pin.getFrameJacobian(model, data, frame_id, world)[0:3]
             drift[rows] = pin.getFrameClassicalAcceleration(model, data, frame_id, world).linear
-            frame[rows] = data.oMf[frame_id].translation
+        views["foot_frame"][:] = self._foot_frames.reshape(-1)  # placed by ``observe``
         views["velocity"][:] = v
         views["rotation"][:] = rotation
         views["base_position"][:] = state.position_base_in_world_m
@@ -236,16 +242,17 @@ class WholeBodyController:
         views["angular_acceleration"][:] = target.angular_acceleration_rad_s2
         stance = np.asarray(target.stance, dtype=bool)
         views["stance"][:] = stance
-        views["planned_grf"][:] = np.reshape(target.planned_grf_n, -1)
-        views["foot_position"][:] = np.reshape(target.foot_position_m, -1)
-        views["foot_velocity"][:] = np.reshape(target.foot_velocity_m_s, -1)
-        views["foot_acceleration"][:] = np.reshape(target.foot_acceleration_m_s2, -1)
+        # the (4, 3) targets through (4, 3) views of the flat inputs: no reshape call each
+        views["planned_grf"].reshape(-1, 3)[:] = target.planned_grf_n
+        views["foot_position"].reshape(-1, 3)[:] = target.foot_position_m
+        views["foot_velocity"].reshape(-1, 3)[:] = target.foot_velocity_m_s
+        views["foot_acceleration"].reshape(-1, 3)[:] = target.foot_acceleration_m_s2
         views["wrench_on_robot"][:] = target.wrench_on_robot
         qp = self._qp.assemble()
         x, _, status, _ = daqp.solve(qp.hessian, qp.gradient, qp.constraint, qp.upper,
                                      qp.lower, self._qp.sense(stance))
         elapsed = time.perf_counter() - start
-        if status < 1 or not np.all(np.isfinite(x)):
+        if status < 1 or not np.isfinite(x).all():
             return self._failed(int(status), elapsed)
         torque = qp.constraint[TORQUE_ROWS] @ x + bias[6:]
         # swing forces are pinned to zero; the product drops the solver's round-off there
