@@ -133,6 +133,9 @@ def run_deploy(args: argparse.Namespace) -> int:
             say(f"recording to {path}")
         if process is not None:
             process.clock = clock
+            # warm starts back only for the log's keyframes
+            process.memory_every = (None if recorder is None
+                                    else recorder.settings.warm_start_every)
         if backend is not None and config.sim.faults:  # drills: faults of porter's own
             faults = PorterFaults(config.sim.faults, clock, backend.start_s)
             runner = faults.runner(runner or NmpcThread(control, clock))

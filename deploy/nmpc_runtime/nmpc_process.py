@@ -6,9 +6,11 @@ In a thread, the NMPC's Python (guesses, parameters, consensus and dual updates,
 ~4 ms per 2-agent update) takes the interpreter lock from the 500 Hz loop for whole switch
 intervals; in a process it competes for a core only. The process builds the scenario's NMPC
 (``deploy.runtime.controller.build_team_mpc``; its ADMM workers, if any, are its children),
-answers ``ready``, then takes one ``(update, inputs)`` at a time over a pipe and answers
-``(update, plan or None, error, done_monotonic_s, memory)``: plain arrays and dataclasses, no
-shared state. ``memory`` is the warm start the update started from, for the log's keyframes.
+answers ``ready``, then takes one ``(update, inputs, with_memory)`` at a time over a pipe and
+answers ``(update, plan or None, error, done_monotonic_s, memory)``: plain arrays and
+dataclasses, no shared state. ``memory`` is the warm start the update started from, for the
+log's keyframes: only with ``with_memory`` (``NmpcProcess.memory_every``), else None (43 kB of
+arrays for three agents, pickled, piped and unpickled on the loop's core for nothing).
 
 The loop only polls the pipe (``take`` never blocks). A process that dies, or a pipe that
 breaks, yields an error result for the running update (the supervisor counts it as a failed
@@ -61,8 +63,8 @@ def _serve(scenario: Scenario, settings: MpcSettings, cache: CompiledCodeCache,
                 return
             if message is None:
                 return
-            update, inputs = message
-            memory = controller.memory()
+            update, inputs, with_memory = message
+            memory = controller.memory() if with_memory else None
             plan, error = None, ""
             try:
                 plan = controller.update(inputs)
@@ -99,6 +101,9 @@ class NmpcProcess:
         self._process.start()
         child.close()
         self._pending: tuple[NmpcDecision, int, float, float] | None = None
+        # the updates whose warm start comes back (every memory_every-th: the recording's
+        # keyframes, ``FlightRecorderSettings.warm_start_every``); None: none (no recording)
+        self.memory_every: int | None = 1
         self._closed = False
         try:
             ready = self._connection.poll(start_timeout_s) and self._connection.recv() == "ready"
@@ -127,7 +132,8 @@ class NmpcProcess:
             raise RuntimeError("NMPC update submitted while one is running")
         inputs: MpcInputs = decision.inputs
         try:
-            self._connection.send((update, inputs))
+            every = self.memory_every
+            self._connection.send((update, inputs, every is not None and update % every == 0))
         except (BrokenPipeError, OSError) as error:
             raise NmpcProcessError(f"the NMPC process is gone ({error})") from error
         self._pending = (decision, update, self.clock(), time.monotonic())

@@ -140,6 +140,9 @@ class SimRun:
         sim, controller = self.simulation, self.scenario.controller
         process = (NmpcProcess(self.scenario, self.settings, self.control.cache)
                    if controller.overlap_computation else None)
+        if process is not None:  # warm starts back only for the log's keyframes
+            process.memory_every = (None if self.recording is None
+                                    else self.recording.recorder.settings.warm_start_every)
         runner = LockstepNmpc(self.control, lambda: sim.time_s, controller.model_computation_delay,
                               controller.computation_delay_s, process)
         nmpc = NmpcSchedule(self.control, runner, 1.0 / self.settings.sample_period_s,

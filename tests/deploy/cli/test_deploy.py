@@ -25,6 +25,7 @@ from deploy.cli.porter import main
 from deploy.config.deploy_config import CONFIG_DIR, load_deploy_config
 from deploy.config.files import ConfigError
 from deploy.config.scenario import load_scenario
+from deploy.recording.flight_recorder import RecorderSettings
 from deploy.recording.log_reader import LogFile
 from deploy.runtime import realtime
 from deploy.runtime.blas_kernels import GENERIC, cpu_target, host_cpu_flags
@@ -97,6 +98,11 @@ def test_deploy_on_the_sim_backend_stands_walks_carries_and_sits_down(
     assert counts["/nmpc/update"] >= 16 * 30
     # every decision's outcome is logged, but for one still running when the team sat down
     assert counts["/nmpc/inputs"] - counts["/nmpc/update"] in (0, 1)
+    # a warm-start keyframe every recorder.warm_start_every updates (60): the NMPC's process
+    # sends its warm start back for those updates only
+    every = RecorderSettings().warm_start_every
+    keyframes = [m.message.update for m in log.messages(["/nmpc/warm_start"])]
+    assert keyframes == list(range(0, counts["/nmpc/update"], every))
     assert log.metadata()["porter"]["backend"] == "sim"
     # the kernels its solvers ran on, for a later replay: this CPU's, or CasADi's where this
     # process had loaded those first

@@ -1,5 +1,6 @@
 """The NMPC in its own process: the same plans as in the loop's process, non-blocking
-hand-over, the warm start it started from, and a dead process reported, not hung on."""
+hand-over, the warm start it started from (for the updates asked), and a dead process
+reported, not hung on."""
 
 from __future__ import annotations
 
@@ -106,15 +107,23 @@ def test_wait_blocks_for_the_answer_and_reports_a_dead_process(run: SimRun) -> N
     try:
         with pytest.raises(RuntimeError, match="no NMPC update submitted"):
             runner.wait(1.0)
+        runner.memory_every = 2  # the warm start comes back for even updates only
         runner.submit(_decision(run), 7)
         answer = runner.wait(60.0)
         assert answer.update == 7 and answer.error == "" and answer.plan is not None
+        assert answer.memory is None
         assert not runner.busy
         runner.submit(_decision(run, 0.05), 8)
+        kept = runner.wait(60.0)
+        assert kept.memory is not None and all(p is not None for p in kept.memory.previous)
+        runner.memory_every = None  # no recording: never
+        runner.submit(_decision(run, 0.1), 10)
+        assert runner.wait(60.0).memory is None
+        runner.submit(_decision(run, 0.15), 11)
         runner.kill()
         started = time.monotonic()
         dead = runner.wait(60.0)  # the broken pipe ends the wait, not the timeout
         assert time.monotonic() - started < 10.0
-        assert dead.plan is None and dead.update == 8 and "died" in dead.error
+        assert dead.plan is None and dead.update == 11 and "died" in dead.error
     finally:
         runner.close()
