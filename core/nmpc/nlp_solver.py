@@ -243,6 +243,12 @@ class NlpSolver:
                            [ca.triu(objective_weight * hessian)],
                            ["x", "p", "lam_f", "lam_g"], ["triu_hess_gamma_x_x"])
 
+    @property
+    def sizes(self) -> tuple[int, int, int]:
+        """(decision variables, parameters, constraints) of the problem."""
+        inputs = self._solver.inputs
+        return inputs["x0"].size, inputs["p"].size, inputs["lbg"].size
+
     def solve(
         self,
         initial_guess: np.ndarray,

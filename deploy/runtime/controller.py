@@ -92,18 +92,20 @@ class WbcStep:
 
 
 def build_team_mpc(scenario: Scenario, settings: MpcSettings, cache: CompiledCodeCache,
-                   solve_first_here: bool = True) -> CentralizedMpc | DistributedMpc:
+                   solve_first_here: bool = True, executor_spin_s: float = 0.0
+                   ) -> CentralizedMpc | DistributedMpc:
     """The scenario's NMPC (centralized, or ADMM with the scenario's executor) on ``settings``
     (``Scenario.mpc_settings``), its solvers built from ``cache``. ``solve_first_here``: with
     the process executor, the first agent's solve runs in this process (False where this
-    interpreter also runs the 500 Hz loop)."""
+    interpreter also runs the 500 Hz loop); ``executor_spin_s``: its ``spin_s``."""
     team = TeamModel.from_settings(scenario.team_settings(), srb_parameters)
     if scenario.controller.mode == "centralized":
         return CentralizedMpc(team, settings, compiler=cache)
     spec = LocalSolverSpec(settings, team.agent_count, cache)
     executor: ProcessExecutor | ZenohExecutor | None = None
     if scenario.controller.executor == "process":
-        executor = ProcessExecutor(spec, solve_first_here=solve_first_here)
+        executor = ProcessExecutor(spec, solve_first_here=solve_first_here,
+                                   spin_s=executor_spin_s)
     elif scenario.controller.executor == "zenoh":
         executor = ZenohExecutor(spec, scenario.controller.network, scenario.name)
     return DistributedMpc(team, settings, executor=executor, compiler=cache)
@@ -136,7 +138,8 @@ class TeamController:
     def __init__(self, scenario: Scenario, cache: CompiledCodeCache | None = None,
                  base_settings: MpcSettings | None = None,
                  wbc_settings: WbcSettings | None = None, tick_s: float = WBC_TICK_S,
-                 build_mpc: bool = True, nmpc_shares_loop: bool = False) -> None:
+                 build_mpc: bool = True, nmpc_shares_loop: bool = False,
+                 executor_spin_s: float = 0.0) -> None:
         self.scenario = scenario
         self.tick_s = tick_s
         self.start_s = 0.0
@@ -167,7 +170,8 @@ class TeamController:
         self.estimator = PayloadEstimator(self.team)
         # An NMPC thread beside the loop must leave every solve to worker processes.
         self._controller = (build_team_mpc(scenario, self.settings, self.cache,
-                                           solve_first_here=not nmpc_shares_loop)
+                                           solve_first_here=not nmpc_shares_loop,
+                                           executor_spin_s=executor_spin_s)
                             if build_mpc else None)
         self.payload_estimate: np.ndarray | None = None
 

@@ -61,6 +61,8 @@ __all__ = ["WBC_DECIMATION", "SimRun"]
 
 WBC_DECIMATION = 2  # physics steps per loop tick: 500 Hz
 MOCAP_VELOCITY_WINDOW_S = 0.08
+# the process executor's spin (``ProcessExecutor``): an update's rounds come ~0.3 ms apart
+LOCKSTEP_EXECUTOR_SPIN_S = 0.002
 
 Progress = Callable[[float, float, float], None]  # (sim time, duration, wall time) [s]
 
@@ -74,9 +76,11 @@ class SimRun:
                  supervisor_settings: SupervisorSettings | None = None) -> None:
         self.scenario = scenario
         tick_s = WBC_DECIMATION * PHYSICS_TIMESTEP_S
-        # overlapping: the NMPC is built in its own process instead (``run``)
+        # overlapping: the NMPC is built in its own process instead (``run``). In lockstep the
+        # ADMM workers' core and this one are the run's own: the executor spins for answers
         self.control = TeamController(scenario, cache, base_settings, wbc_settings, tick_s=tick_s,
-                                      build_mpc=not scenario.controller.overlap_computation)
+                                      build_mpc=not scenario.controller.overlap_computation,
+                                      executor_spin_s=LOCKSTEP_EXECUTOR_SPIN_S)
         self.wbc_settings = self.control.wbc_settings
         self.settings = self.control.settings
         self.obstacles = self.control.obstacles

@@ -1,4 +1,5 @@
-"""The process executor gives the same ADMM result as the serial one, and survives a dead worker."""
+"""The process executor gives the same ADMM result as the serial one (blocking or spinning for
+answers), survives a dead worker, and removes its shared memory when closed."""
 
 from __future__ import annotations
 
@@ -10,9 +11,10 @@ from pathlib import Path
 import numpy as np
 import pytest
 
-from core.nmpc.admm_executor import LocalSolverSpec
+from core.nmpc.admm_executor import LocalSolveRequest, LocalSolverSpec
 from core.nmpc.admm_mpc import DistributedMpc
 from deploy.nmpc_runtime.process_executor import ProcessExecutor
+from deploy.nmpc_runtime.solve_slots import SHM_DIRECTORY
 from tests.core.controller_fixtures import inputs_at_start, settings, team
 
 ROOT = Path(__file__).resolve().parents[3]
@@ -108,7 +110,7 @@ def test_no_solve_here_in_a_process_that_loaded_casadis_blasfeo_first() -> None:
     code = textwrap.dedent("""
         import platform
         import casadi as ca
-        from core.nmpc.admm_executor import LocalSolverSpec
+        from core.nmpc.admm_executor import LocalSolveRequest, LocalSolverSpec
         from deploy.nmpc_runtime.process_executor import ProcessExecutor
         from deploy.runtime.blas_kernels import cpu_target, host_cpu_flags
         from deploy.runtime.codegen_cache import CompiledCodeCache
@@ -134,3 +136,41 @@ def test_no_solve_here_in_a_process_that_loaded_casadis_blasfeo_first() -> None:
         assert here == "()" and worker.strip() == "True"
     else:
         assert here == "(0,)" and worker.strip() == "False"
+
+
+def test_spinning_for_answers_gives_the_serial_plans_and_a_dead_worker_still_fails() -> None:
+    """``spin_s`` (lockstep runs): the caller and the workers poll without sleeping between
+    rounds; the serial plans over several warm updates (as the blocking executor's: this
+    process's kernels may be CasADi's, the workers' are porter's); a worker killed while it
+    spins fails its agent's solves; the shared memory is gone after ``close``."""
+    mpc = settings()
+    model = team()
+    inputs = inputs_at_start(model, mpc)
+    serial = DistributedMpc(model, mpc)
+    executor = ProcessExecutor(LocalSolverSpec(mpc, model.agent_count), timeout_s=5.0,
+                               processes=2, spin_s=0.002)
+    blocks = [SHM_DIRECTORY / slots.layout.name for slots in executor._slots.values()]
+    assert blocks and all(block.exists() for block in blocks)
+    try:
+        spinning = DistributedMpc(model, mpc, executor=executor)
+        for _ in range(3):  # warm updates: the second round finds the worker spinning
+            expected, plan = serial.update(inputs), spinning.update(inputs)
+            assert plan.success
+            np.testing.assert_allclose(plan.grf, expected.grf, atol=1e-6)
+            np.testing.assert_allclose(plan.consensus_trajectory,
+                                       expected.consensus_trajectory, atol=1e-6)
+        worker = executor.worker_of(1)
+        assert worker is not None
+        worker.kill()
+        worker.join()
+        failed = spinning.update(inputs)
+        assert not failed.success and any("executor" in s.status for s in failed.solves)
+        # a request of another problem is refused per agent, not raised
+        odd = LocalSolveRequest(1, np.zeros(3), np.zeros(2), np.zeros(3), np.zeros(3))
+        results = executor.solve_all([odd])
+        assert not results[0].stats.success and "does not fit" in results[0].stats.status
+    finally:
+        executor.close()
+    assert not any(block.exists() for block in blocks)
+    with pytest.raises(ValueError, match="spin_s"):
+        ProcessExecutor(LocalSolverSpec(mpc, model.agent_count), spin_s=1.0)

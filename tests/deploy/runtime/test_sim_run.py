@@ -153,3 +153,21 @@ def test_overlapping_the_nmpc_process_gives_the_same_run(tmp_path: Path) -> None
                           capture_output=True, text=True, timeout=600, check=False)
     assert done.returncode == 0, done.stdout + done.stderr
     assert "60 decisions replayed" in done.stdout and "0 status mismatches" in done.stdout
+
+
+def test_the_process_executor_gives_the_serial_run() -> None:
+    """``porter sim two_go2``'s default executor (worker processes, requests in shared memory,
+    caller and worker spinning between rounds) runs the serial executor's run: every non-timing
+    summary field equal. Fresh processes: the same BLASFEO kernels in both."""
+    summaries = []
+    for executor in (["--serial"], []):
+        done = subprocess.run(
+            [sys.executable, "-m", "deploy.cli", "sim", "two_go2", "--duration", "1.0",
+             "--no-record", "--quiet", *executor],
+            cwd=ROOT, capture_output=True, text=True, timeout=600, check=False)
+        assert done.returncode == 0, done.stderr
+        summaries.append(json.loads(done.stdout))
+    serial, parallel = summaries
+    assert serial["nmpc_updates"] == 60
+    for key in set(serial) - TIMING_KEYS:
+        assert serial[key] == parallel[key], key
