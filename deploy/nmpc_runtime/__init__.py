@@ -3,8 +3,8 @@
 ``nmpc_schedule`` (the grid, the hand-off, the supervisor's flags) drives one runner:
 ``nmpc_process`` (a process of its own), ``nmpc_thread`` (a thread of the loop's process) or
 ``nmpc_lockstep`` (simulated time); ``process_executor`` runs ADMM local solves in worker
-processes. Names load on first use (``core.lazy_exports``), so importing the package imports
-nothing else.
+processes, their arrays in shared memory (``solve_slots``). Names load on first use
+(``core.lazy_exports``), so importing the package imports nothing else.
 """
 
 from __future__ import annotations

@@ -102,7 +102,7 @@ class NmpcProcess:
         child.close()
         self._pending: tuple[NmpcDecision, int, float, float] | None = None
         # the updates whose warm start comes back (every memory_every-th: the recording's
-        # keyframes, ``FlightRecorderSettings.warm_start_every``); None: none (no recording)
+        # keyframes, ``RecorderSettings.warm_start_every``; default: every); None: none
         self.memory_every: int | None = 1
         self._closed = False
         try:

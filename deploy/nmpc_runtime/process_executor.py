@@ -145,12 +145,12 @@ class ProcessExecutor:
         for request in requests:
             batches.setdefault(self._process_of[request.agent], []).append(request)
         sent: dict[int, bool] = {}
-        unfit: dict[int, bool] = {}
+        unfit: set[int] = set()  # batches of another problem's requests: never sent
         for index, batch in batches.items():
             if index in self._connections:
                 slots = self._slots[index]
                 if not all(slots.layout.fits(request) for request in batch):
-                    unfit[index] = True  # another problem's request: never sent
+                    unfit.add(index)
                     continue
                 headers = [(self._slot_of[r.agent], slots.put_request(self._slot_of[r.agent], r))
                            for r in batch]

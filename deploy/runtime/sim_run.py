@@ -55,7 +55,8 @@ from deploy.runtime.run_metrics import (
 from deploy.safety.supervisor import SupervisorSettings
 from drivers.interfaces import RobotDriver
 from drivers.mujoco.scene import PHYSICS_TIMESTEP_S, build_team_scene
-from drivers.mujoco.simulation import SimulatedEstop, TeamSimulation
+from drivers.mujoco.sim_links import SimulatedEstop
+from drivers.mujoco.simulation import TeamSimulation
 
 __all__ = ["WBC_DECIMATION", "SimRun"]
 

@@ -2,9 +2,10 @@
 
 ``TeamSimulation`` owns one ``mujoco.MjData`` started at ``TeamScene.initial_qpos``. Each robot
 is reached through a ``RobotDriver`` (``robot_driver(name)``), the motion-capture system
-through a ``MocapSource`` (``mocap()``). Joint commands are applied like Unitree motor
-firmware: the law of ``JointCommand`` is re-evaluated from the current (q, dq) at every
-physics step and clipped to the actuator ctrlrange (the URDF effort limit).
+through a ``MocapSource`` (``mocap()``), both in ``drivers.mujoco.sim_links``. Joint commands
+are applied like Unitree motor firmware: the law of ``JointCommand`` is re-evaluated from the
+current (q, dq) at every physics step and clipped to the actuator ctrlrange (the URDF effort
+limit).
 
 Ground truth for tests and logs (world frame, SI units): ``payload_pose``,
 ``payload_velocity``, ``coupling_wrench``. Scripted disturbances: ``apply_push``.
@@ -15,23 +16,21 @@ Deterministic: the same scene, seed, call sequence and commands give identical t
 
 from __future__ import annotations
 
-import math
 from dataclasses import dataclass
 
 import mujoco
 import numpy as np
 
-from core.model.conventions import FOOT_COUNT, JOINT_COUNT, PAYLOAD_NAME
+from core.model.conventions import FOOT_COUNT, PAYLOAD_NAME
 from core.model.rotations import cross3
 from drivers.interfaces import (
-    EstopStatus,
     JointCommand,
     MocapFrame,
     Pose,
     RobotMeasurement,
-    WrenchReading,
 )
 from drivers.mujoco.scene import RobotIndices, TeamScene
+from drivers.mujoco.sim_links import SimMocap, SimRobotDriver, SimWrenchSensors
 
 _PYRAMIDAL_CONE = int(mujoco.mjtCone.mjCONE_PYRAMIDAL)
 # as a plain int: an array compared with the binding's enum object compares element by element
@@ -70,6 +69,7 @@ class TeamSimulation:
         self._rng = np.random.default_rng(seed)
         self._commands = {robot.name: JointCommand() for robot in scene.robots}
         self._pushes: list[_Push] = []
+        self._pushed = False  # xfrc_applied holds pushes of the last step
         # the moving obstacles' t = 0 [s of simulated time]; before it they stand at their
         # starts (the sim backend's world lays the robots down first, then sets it)
         self.obstacle_origin_s = 0.0
@@ -181,10 +181,12 @@ class TeamSimulation:
                                   self.time_s + duration_s))
 
     def _apply_pushes(self) -> None:
-        self.data.xfrc_applied[:] = 0.0
-        self._pushes = [p for p in self._pushes if self.time_s < p.end_time_s - 1e-12]
-        for push in self._pushes:
-            self.data.xfrc_applied[push.body_id, 0:3] += push.force_in_world_n
+        if self._pushes or self._pushed:  # else nothing applied, nothing to clear
+            self.data.xfrc_applied[:] = 0.0
+            self._pushes = [p for p in self._pushes if self.time_s < p.end_time_s - 1e-12]
+            for push in self._pushes:
+                self.data.xfrc_applied[push.body_id, 0:3] += push.force_in_world_n
+            self._pushed = bool(self._pushes)
 
     # --- ground truth --------------------------------------------------------------------
     def payload_pose(self) -> Pose:
@@ -306,87 +308,6 @@ class TeamSimulation:
             mujoco.mju_mulQuat(quaternion, noise, self.data.qpos[a + 3:a + 7])
             poses[name] = (position, quaternion)
         return MocapFrame(time_s=self.time_s, poses=poses)
-
-
-class SimRobotDriver:
-    """``RobotDriver`` of one simulated robot (reads and writes its ``TeamSimulation``)."""
-
-    def __init__(self, simulation: TeamSimulation, robot: RobotIndices) -> None:
-        self._simulation = simulation
-        self._robot = robot
-
-    @property
-    def name(self) -> str:
-        return self._robot.name
-
-    def read(self) -> RobotMeasurement:
-        return self._simulation._measure(self._robot)
-
-    def send(self, command: JointCommand) -> None:
-        self._simulation.set_command(self._robot.name, command)
-
-    def send_damping(self, kd: float) -> None:
-        self.send(JointCommand(kd=np.full(JOINT_COUNT, kd)))
-
-    def close(self) -> None:
-        """Nothing to release: the simulation is the link."""
-
-
-class SimMocap:
-    """``MocapSource`` of a ``TeamSimulation``: noisy frames of the current state, a new one
-    at every instant of a ``rate_hz`` grid of simulated time (the first call makes the first),
-    or at every call when ``rate_hz`` is None. Each frame draws its noise once."""
-
-    def __init__(self, simulation: TeamSimulation, rate_hz: float | None = None) -> None:
-        self._simulation = simulation
-        self._period_s = None if rate_hz is None else 1.0 / rate_hz
-        self._frame: MocapFrame | None = None
-        self._next = 0  # index of the next frame instant on the grid
-
-    def latest(self) -> MocapFrame | None:
-        t = self._simulation.time_s
-        if self._period_s is None:
-            return self._simulation._mocap_frame()
-        if self._frame is None or t >= self._next * self._period_s - 1e-9:
-            self._frame = self._simulation._mocap_frame()
-            self._next = int(np.floor(t / self._period_s + 1e-6)) + 1
-        return self._frame
-
-    def age_s(self) -> float:
-        if self._period_s is None:
-            return 0.0
-        return math.inf if self._frame is None else self._simulation.time_s - self._frame.time_s
-
-
-class SimWrenchSensors:
-    """``WrenchSensors`` of a ``TeamSimulation``: the wrench each coupling transmits now."""
-
-    def __init__(self, simulation: TeamSimulation) -> None:
-        self._simulation = simulation
-        self._count = 0
-
-    def latest(self) -> dict[str, WrenchReading]:
-        self._count += 1
-        sim = self._simulation
-        readings = {}
-        for robot in sim.scene.robots:
-            force_n, torque_nm = sim.coupling_wrench(robot.name)
-            readings[robot.name] = WrenchReading(force_n, torque_nm, self._count, False,
-                                                 sim.time_s)
-        return readings
-
-
-class SimulatedEstop:
-    """``EstopSource`` of a simulation: no e-stop hardware, so run is allowed until ``press``."""
-
-    def __init__(self) -> None:
-        self._reason = ""
-
-    def press(self, reason: str = "pressed") -> None:
-        self._reason = reason
-
-    def status(self) -> EstopStatus:
-        return EstopStatus(not self._reason, self._reason or "run")
 
 
 def _rotation(quaternion_wxyz: np.ndarray) -> np.ndarray:
