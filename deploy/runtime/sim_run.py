@@ -19,6 +19,7 @@ the log's ``/sim/ground_truth`` only, after every physics tick.
 
 from __future__ import annotations
 
+import os
 import time
 from collections.abc import Callable
 
@@ -65,6 +66,13 @@ MOCAP_VELOCITY_WINDOW_S = 0.08
 # the process executor's spin (``ProcessExecutor``): an update's rounds come ~0.3 ms apart
 LOCKSTEP_EXECUTOR_SPIN_S = 0.002
 
+
+def lockstep_spin_s() -> float:
+    """The executor's spin for a lockstep run: ``LOCKSTEP_EXECUTOR_SPIN_S`` where this process
+    may use two CPUs or more; 0 where it has one (a spinning caller or worker would take the
+    core the other one waits for)."""
+    return LOCKSTEP_EXECUTOR_SPIN_S if len(os.sched_getaffinity(0)) > 1 else 0.0
+
 Progress = Callable[[float, float, float], None]  # (sim time, duration, wall time) [s]
 
 
@@ -81,7 +89,7 @@ class SimRun:
         # ADMM workers' core and this one are the run's own: the executor spins for answers
         self.control = TeamController(scenario, cache, base_settings, wbc_settings, tick_s=tick_s,
                                       build_mpc=not scenario.controller.overlap_computation,
-                                      executor_spin_s=LOCKSTEP_EXECUTOR_SPIN_S)
+                                      executor_spin_s=lockstep_spin_s())
         self.wbc_settings = self.control.wbc_settings
         self.settings = self.control.settings
         self.obstacles = self.control.obstacles

@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import json
+import os
 import subprocess
 import sys
 from pathlib import Path
@@ -11,7 +12,7 @@ import pytest
 
 from deploy.config.scenario import Scenario, load_scenario, shipped_scenarios
 from deploy.runtime.codegen_cache import CompiledCodeCache
-from deploy.runtime.sim_run import SimRun
+from deploy.runtime.sim_run import LOCKSTEP_EXECUTOR_SPIN_S, SimRun, lockstep_spin_s
 
 ROOT = Path(__file__).resolve().parents[3]
 # Wall-clock fields: they differ between runs by nature.
@@ -171,3 +172,13 @@ def test_the_process_executor_gives_the_serial_run() -> None:
     assert serial["nmpc_updates"] == 60
     for key in set(serial) - TIMING_KEYS:
         assert serial[key] == parallel[key], key
+
+
+def test_the_lockstep_executor_spins_only_with_two_cpus_or_more() -> None:
+    cpus = os.sched_getaffinity(0)
+    try:
+        os.sched_setaffinity(0, {min(cpus)})
+        assert lockstep_spin_s() == 0.0  # one CPU: a spinner would take the other's core
+    finally:
+        os.sched_setaffinity(0, cpus)
+    assert lockstep_spin_s() == (LOCKSTEP_EXECUTOR_SPIN_S if len(cpus) > 1 else 0.0)
