@@ -86,31 +86,24 @@ class DecisionRows:
     @staticmethod
     def of(decision: BlockLayout, horizon_steps: int, robot_keys: list[str],
            slack_block: str) -> DecisionRows:
-        def starts(block: str, stages: int) -> np.ndarray:
-            return np.array([decision.offsets[f"{block}@{k}"][0] for k in range(stages)])
-
-        def rows(block: str) -> np.ndarray:  # every row of the block
-            return np.arange(*decision.slice(block).indices(decision.size))
-
         n = horizon_steps
-        slack = ([rows(f"{slack_block}@{k}") for k in range(n)]
-                 if f"{slack_block}@0" in decision.offsets else [])
+        soft = f"{slack_block}@0" in decision.offsets
         return DecisionRows(
-            robot_state={key: starts(f"robot_{key}", n + 1) for key in robot_keys},
-            payload_state=starts("payload", n + 1),
+            robot_state={key: decision.stage_rows(f"robot_{key}", n + 1)[:, 0]
+                         for key in robot_keys},
+            payload_state=decision.stage_rows("payload", n + 1)[:, 0],
             # (x, y, z) per foot: every third row from the third
-            grf_z={key: np.array([rows(f"grf_{key}@{k}")[2::3] for k in range(n)])
-                   for key in robot_keys},
-            slack=np.concatenate(slack) if slack else np.zeros(0, dtype=int),
+            grf_z={key: decision.stage_rows(f"grf_{key}", n)[:, 2::3] for key in robot_keys},
+            slack=(decision.stage_rows(slack_block, n).reshape(-1) if soft
+                   else np.zeros(0, dtype=int)),
         )
-
 
 def shared_indices(decision: BlockLayout, horizon_steps: int, agent_count: int
                    ) -> np.ndarray:
     """Where the shared trajectory s (``TransportProblem.shared_trajectory``) sits in a local
-    or centralized decision vector laid out by ``decision``: ``solution[indices]`` is s."""
+    or centralized decision vector laid out by ``decision``: ``solution[indices]`` is s
+    (payload states k = 1..N, then wrench j = 1..n_A over k = 0..N-1)."""
     n = horizon_steps
-    names = [f"payload@{k}" for k in range(1, n + 1)]
-    names += [f"wrench_{j}@{k}" for j in range(agent_count) for k in range(n)]
-    whole = np.arange(decision.size)
-    return np.concatenate([decision.get(whole, name) for name in names])
+    return np.concatenate([decision.stage_rows("payload", n + 1)[1:].reshape(-1)]
+                          + [decision.stage_rows(f"wrench_{j}", n).reshape(-1)
+                             for j in range(agent_count)])

@@ -45,12 +45,13 @@ def shifted_multipliers(problem: TransportProblem, previous: NlpSolution
 
 def nominal_foot_forces(contacts: np.ndarray, supported_mass_kg: float, gravity_m_s2: float
                         ) -> np.ndarray:
-    """12-vector of GRFs [N] sharing ``supported_mass_kg``'s weight among the stance feet."""
+    """12-vector of GRFs [N] sharing ``supported_mass_kg``'s weight among the stance feet of
+    ``contacts`` (4,) flags; (..., 4) flags give (..., 12), one per row."""
     flags = np.asarray(contacts, dtype=float)
-    stance = max(flags.sum(), 1.0)
-    forces = np.zeros((4, 3))
-    forces[:, 2] = flags * supported_mass_kg * gravity_m_s2 / stance
-    return forces.reshape(-1)
+    stance = np.maximum(flags.sum(axis=-1), 1.0)[..., None]
+    forces = np.zeros((*flags.shape, 3))
+    forces[..., 2] = flags * supported_mass_kg * gravity_m_s2 / stance
+    return forces.reshape(*flags.shape[:-1], -1)
 
 
 def conform_forces(
@@ -67,8 +68,7 @@ def conform_forces(
     flags = np.asarray(contacts, dtype=float)
     rows = layout.stage_rows(grf_block, len(flags))
     forces = guess[rows].reshape(-1, 4, 3)
-    nominal_z = flags * supported_mass_kg * gravity_m_s2 / np.maximum(flags.sum(axis=1), 1.0)[
-        :, None]
+    nominal_z = nominal_foot_forces(flags, supported_mass_kg, gravity_m_s2)[:, 2::3]
     swing = flags == 0.0
     unloaded = ~swing & (forces[:, :, 2] < minimum_stance_force_n)
     forces[swing | unloaded] = 0.0
