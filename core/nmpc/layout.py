@@ -56,6 +56,7 @@ class BlockLayout:
         if rows is None:
             rows = np.array([np.arange(*self.slice(f"{block}@{k}").indices(self.size))
                              for k in range(stages)])
+            rows.flags.writeable = False  # shared by every caller (and ``DecisionRows``' views)
             self._stage_rows[(block, stages)] = rows
         return rows
 
