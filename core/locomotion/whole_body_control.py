@@ -181,13 +181,16 @@ class WholeBodyController:
         pin.framesForwardKinematics(self.model, self.data, q)
         return self._feet()
 
-    def _feet(self) -> np.ndarray:
-        """Contact points (4, 3) [m] from the frames' placements; the frames themselves stay in
+    def _place_feet(self) -> None:
+        """The foot frames' positions [m] from the placements in ``data`` into
         ``_foot_frames`` (``compute`` reads them there)."""
-        frames = self._foot_frames
         for leg, frame_id in enumerate(self.foot_frame_ids):
-            frames[leg] = self.data.oMf[frame_id].translation
-        feet = frames.copy()
+            self._foot_frames[leg] = self.data.oMf[frame_id].translation
+
+    def _feet(self) -> np.ndarray:
+        """Contact points (4, 3) [m]: the foot frames placed, minus the foot radius in z."""
+        self._place_feet()
+        feet = self._foot_frames.copy()
         feet[:, 2] -= self.foot_radius_m
         return feet
 
@@ -216,7 +219,7 @@ class WholeBodyController:
             q, v, rotation, _ = self._conversion(state)
             pin.computeAllTerms(model, data, q, v)
             pin.updateFramePlacements(model, data)  # the swing feet's placements (oMf)
-            self._feet()
+            self._place_feet()
         views = self._qp.views
         views["mass"][:] = data.M  # upper triangle filled; the assembly mirrors it
         bias = views["bias"]
