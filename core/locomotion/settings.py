@@ -30,4 +30,9 @@ class WbcSettings(StrictModel):
     friction_coefficient: float = Field(0.4, gt=0)
     min_normal_force_n: float = Field(1.0, ge=0)
     max_normal_force_n: float = Field(250.0, gt=0)
-    joint_damping_nm_s: float = Field(0.5, ge=0)  # firmware kd toward the QP's joint velocity
+    # The hybrid joint command (Unitree's q, dq, kp, kd, tau): beside the QP's torque, the
+    # motor's own PD holds the position and velocity the QP's accelerations integrate to one
+    # tick ahead, so that a command applied longer than planned (a late state, tick or plan)
+    # holds the leg instead of driving it with an open torque.
+    joint_stiffness_nm_rad: float = Field(10.0, ge=0)  # firmware kp toward the position target
+    joint_damping_nm_s: float = Field(0.5, ge=0)  # firmware kd toward the velocity target

@@ -9,8 +9,25 @@ from collections.abc import Callable
 Handler = Callable[[argparse.Namespace], int]
 
 
-def add_log_parsers(commands: argparse._SubParsersAction, info_handler: Handler,
-                    recover_handler: Handler, regress_handler: Handler,
+def _log_info(args: argparse.Namespace) -> int:
+    from deploy.cli.log_commands import run_log_info
+
+    return run_log_info(args)
+
+
+def _log_recover(args: argparse.Namespace) -> int:
+    from deploy.cli.log_commands import run_log_recover
+
+    return run_log_recover(args)
+
+
+def _log_timeline(args: argparse.Namespace) -> int:
+    from deploy.cli.log_commands import run_log_timeline
+
+    return run_log_timeline(args)
+
+
+def add_log_parsers(commands: argparse._SubParsersAction, regress_handler: Handler,
                     count: Callable[[str], int]) -> None:
     log = commands.add_parser("log", help="inspect and repair flight logs")
     log_kinds = log.add_subparsers(dest="log_command", required=True)
@@ -19,11 +36,24 @@ def add_log_parsers(commands: argparse._SubParsersAction, info_handler: Handler,
     info.add_argument("--json", action="store_true", help="print it as one JSON document "
                       "(path, size_bytes, duration_s, messages, topics, metadata, attachments, "
                       "summary)")
-    info.set_defaults(handler=info_handler)
+    info.set_defaults(handler=_log_info)
     recover = log_kinds.add_parser("recover", help="make a killed run's log readable")
     recover.add_argument("log", help="LOG.mcap left by a run that did not close it")
     recover.add_argument("-o", "--output", help="recovered file (default LOG.recovered.mcap)")
-    recover.set_defaults(handler=recover_handler)
+    recover.set_defaults(handler=_log_recover)
+    timeline = log_kinds.add_parser(
+        "timeline", help="what was late before each safe stop",
+        description="For each safe stop in LOG: per robot, the held states (the state did not "
+        "advance), late loop ticks, the gait's stance and the fastest joint, and the team's "
+        "late or missing NMPC plans, in the window before it. Exit 0 whether or not the log "
+        "has a safe stop; 2 when LOG cannot be read.")
+    timeline.add_argument("log", help="LOG.mcap")
+    timeline.add_argument("--around-fault", action="store_true", required=True,
+                          help="the window before each safe stop (the only view so far)")
+    timeline.add_argument("--window-ms", type=float, default=50.0,
+                          help="how far before each stop to look [ms] (default 50)")
+    timeline.add_argument("--json", help="also write the timelines as JSON to this path")
+    timeline.set_defaults(handler=_log_timeline)
 
     regress = commands.add_parser(
         "regress", help="re-run logged NMPC decisions and compare",

@@ -1,4 +1,4 @@
-"""``porter log info LOG`` and ``porter log recover LOG``."""
+"""``porter log info LOG``, ``porter log recover LOG`` and ``porter log timeline LOG``."""
 
 from __future__ import annotations
 
@@ -7,6 +7,7 @@ import json
 import sys
 from pathlib import Path
 
+from deploy.recording.fault_timeline import fault_timelines, format_timelines
 from deploy.recording.log_format import RUN_METADATA
 from deploy.recording.log_reader import LogError, LogFile, recover
 from deploy.reports.table import Column, render_table
@@ -103,4 +104,21 @@ def run_log_recover(args: argparse.Namespace) -> int:
     ending = (f"the stream ended inside a record ({result.error}); the unfinished chunk is lost"
               if result.chunks_lost else "the file was complete")
     print(f"porter log recover: {result.messages} messages copied to {output}; {ending}")
+    return 0
+
+
+def run_log_timeline(args: argparse.Namespace) -> int:
+    window_ms = args.window_ms
+    if not (window_ms > 0 and window_ms <= 10_000):  # NaN fails too
+        print(f"porter: --window-ms must be in (0, 10000] ms, got {window_ms}", file=sys.stderr)
+        return 2
+    try:
+        timelines = fault_timelines(LogFile(args.log), 1e-3 * window_ms)
+    except (LogError, OSError) as error:
+        print(f"porter: {error}", file=sys.stderr)
+        return 2
+    print(format_timelines(timelines))
+    if args.json:
+        Path(args.json).write_text(json.dumps([t.to_json() for t in timelines], indent=2) + "\n")
+        print(f"wrote {args.json}", file=sys.stderr)
     return 0

@@ -160,7 +160,7 @@ def _bench_wbc(args: argparse.Namespace) -> int:
 def _bench_deploy(args: argparse.Namespace) -> int:
     import json
 
-    from deploy.bench.deploy_runs import format_budget, format_table, run_bench
+    from deploy.bench.deploy_runs import completion, format_budget, format_table, run_bench
 
     print(f"porter bench deploy: {args.config} on the sim backend, time scales "
           f"{', '.join(f'{s:g}' for s in args.time_scales)}, {args.runs} run(s) each, "
@@ -171,7 +171,8 @@ def _bench_deploy(args: argparse.Namespace) -> int:
     print()
     print(format_budget(rows))
     if args.json:
-        Path(args.json).write_text(json.dumps({"rows": rows}, indent=2) + "\n")
+        Path(args.json).write_text(json.dumps({"rows": rows, "completion": completion(rows)},
+                                              indent=2) + "\n")
         print(f"wrote {args.json}")
     return 0
 
@@ -198,18 +199,6 @@ def _replay(args: argparse.Namespace) -> int:
     from deploy.cli.replay_command import run_replay
 
     return run_replay(args)
-
-
-def _log_info(args: argparse.Namespace) -> int:
-    from deploy.cli.log_commands import run_log_info
-
-    return run_log_info(args)
-
-
-def _log_recover(args: argparse.Namespace) -> int:
-    from deploy.cli.log_commands import run_log_recover
-
-    return run_log_recover(args)
 
 
 def _regress(args: argparse.Namespace) -> int:
@@ -354,7 +343,7 @@ def build_parser() -> argparse.ArgumentParser:
                         help="send to a running viewer (default URL: Rerun's local one)")
     replay.set_defaults(handler=_replay)
 
-    add_log_parsers(commands, _log_info, _log_recover, _regress, count)
+    add_log_parsers(commands, _regress, count)
     add_agent_parser(commands)
     add_paper_parser(commands)
     return parser

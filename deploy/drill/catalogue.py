@@ -8,7 +8,10 @@ line: exit 2 naming ``cause`` before anything starts), ``not started`` (the pre-
 names ``cause`` and the robots never stand up: exit 1), ``damped`` (porter's own process is
 killed: nothing of porter reports, so the world, running on, says whether every robot got
 damping-only commands within ``DAMPED_WITHIN_S`` from the watchdog and nothing else after, and
-the log must read back up to its last flushed chunk). Times are simulated seconds after the
+the log must read back up to its last flushed chunk), ``rides through`` (a late state or plan
+within the budget: the run completes, exit 0, no safe stop, and the summary's ``evidence``
+count is above 0: the loop saw the fault and held the robot on its last fresh command, or
+counted the late plan). Times are simulated seconds after the
 world starts (the team is RUNNING from about 1.5 s with the drill's short stand-up).
 """
 
@@ -21,7 +24,8 @@ __all__ = ["AT_S", "DAMPED_WITHIN_S", "DrillFault", "catalogue"]
 
 AT_S = 2.5  # simulated s after the world starts: RUNNING by then
 DAMPED_WITHIN_S = 0.05  # kill -9 of porter: every robot damped this soon (simulated s)
-Expect = Literal["safe stop", "sit down", "ignored", "refused", "not started", "damped"]
+Expect = Literal["safe stop", "sit down", "ignored", "refused", "not started", "damped",
+                 "rides through"]
 Action = Literal["none", "sigterm", "sigint", "kill_nmpc", "kill_porter"]
 
 
@@ -38,12 +42,16 @@ class DrillFault:
     args: tuple[str, ...] = ()
     action: Action = "none"
     rejected: str = ""  # ignored: the link that must have counted refusals ("mocap", a robot)
+    evidence: str = ""  # rides through: a summary count (dotted key) that must be above 0
 
 
-def _sim(kind: str, robot: str | None = None, at_s: float = AT_S) -> dict[str, Any]:
+def _sim(kind: str, robot: str | None = None, at_s: float = AT_S,
+         duration_s: float | None = None) -> dict[str, Any]:
     fault: dict[str, Any] = {"at_s": at_s, "kind": kind}
     if robot is not None:
         fault["robot"] = robot
+    if duration_s is not None:
+        fault["duration_s"] = duration_s
     return {"sim": {"faults": [fault]}}
 
 
@@ -68,6 +76,14 @@ def catalogue() -> list[DrillFault]:
                    _sim("robot_silent", "go2_0")),
         DrillFault("robot go2_1 silent", stop, "robot link lost: go2_1",
                    _sim("robot_silent", "go2_1")),
+        DrillFault("robot go2_0 state stalls 20 ms", "rides through", "",
+                   _sim("robot_stall", "go2_0", duration_s=0.02),
+                   evidence="stale_state_held_ticks.go2_0"),
+        DrillFault("robot go2_1 state stalls 60 ms", "rides through", "",
+                   _sim("robot_stall", "go2_1", duration_s=0.06),
+                   evidence="stale_state_held_ticks.go2_1"),
+        DrillFault("robot go2_0 state stalls 150 ms (past its link budget)", stop,
+                   "robot link lost: go2_0", _sim("robot_stall", "go2_0", duration_s=0.15)),
         DrillFault("robot go2_0 frozen (tick stops)", stop, "frozen tick",
                    _sim("robot_frozen", "go2_0")),
         DrillFault("robot go2_1 frozen (tick stops)", stop, "frozen tick",
@@ -81,6 +97,8 @@ def catalogue() -> list[DrillFault]:
                    _sim("robot_push", "go2_0")),
         DrillFault("NMPC solver failure streak", stop, "NMPC solver failed",
                    _sim("nmpc_failure")),
+        DrillFault("NMPC plan 50 ms late", "rides through", "",
+                   _sim("plan_late", duration_s=0.05), evidence="nmpc_deadline_misses"),
         DrillFault("NMPC process killed", stop, "NMPC process lost", action="kill_nmpc"),
         DrillFault("kill -9 of porter (the loop's own process)", "damped", "",
                    action="kill_porter"),

@@ -251,12 +251,23 @@ def _judge(fault: DrillFault, code: int, summary: dict[str, Any] | None, stderr:
     elif fault.expect == "sit down":
         passed = code == 130 and final == "DONE" and not cause
         detail = summary.get("result", "")
+    elif fault.expect == "rides through":
+        count = _dotted(summary, fault.evidence)
+        passed = code == 0 and final == "DONE" and not cause and (count or 0) > 0
+        detail = f"{fault.evidence} {count}; {summary.get('result', '')}"
     else:  # ignored
         rejected = sum(summary.get("rejected", {}).get(fault.rejected, {}).values())
         passed = code == 0 and final == "DONE" and not cause and rejected > 0
         detail = f"{rejected} {fault.rejected} packets refused; {summary.get('result', '')}"
     return DrillRow(fault.name, fault.expect, passed, detected_ms, final, non_damping, log,
                     code, detail[:110])
+
+
+def _dotted(summary: dict[str, Any], key: str) -> Any:
+    value: Any = summary
+    for part in key.split("."):
+        value = value.get(part) if isinstance(value, dict) else None
+    return value
 
 
 def format_table(rows: list[DrillRow]) -> str:

@@ -24,6 +24,7 @@ _SOURCES = {
     "deploy.runtime.gc_pauses": ["GcPauses", "freeze_startup_objects"],
     "deploy.runtime.run_metrics": ["RunMetrics"],
     "deploy.runtime.sim_run": ["WBC_DECIMATION", "SimRun"],
+    "deploy.runtime.stale_state": ["StaleStateHold"],
     "deploy.runtime.stop_request": ["StopRequest"],
     "deploy.runtime.timing": ["Pacer", "PeriodStats"],
 }
@@ -31,8 +32,8 @@ __all__ = ["COMM_LENGTH", "CompilationError", "CompiledCodeCache", "ControlLoop"
            "Heartbeat", "LockstepClock", "LoopClock", "LoopHooks", "LoopSettings", "MocapTracker",
            "NmpcDecision", "PacedClock", "Pacer", "PeriodStats", "RealtimePriorityError",
            "RobotControl", "RunMetrics", "RunningCpu", "build_team_mpc", "cpu_seconds",
-           "name_this_process", "SATURATION_MARGIN", "SimRun", "StopRequest", "TeamController",
-           "TeamLinks",
+           "name_this_process", "SATURATION_MARGIN", "SimRun", "StaleStateHold", "StopRequest",
+           "TeamController", "TeamLinks",
            "WBC_DECIMATION", "WbcStep", "default_cache_directory", "finite_or_none",
            "freeze_startup_objects", "measurement_state", "mocap_state", "open_links"]
 __getattr__ = lazy_exports(__name__, _SOURCES)

@@ -11,7 +11,8 @@ NMPC inputs (``nmpc_inputs``): robot SRB states from the MoCap pose and the robo
 and joints, the payload state from ``PayloadEstimator`` (never ground truth), references,
 trot contact schedule and Raibert footholds, obstacles at the current time.
 WBC (``wbc_steps``): the plan interpolated at the tick's time, gait stance flags and swing-foot
-targets, the QP's torques sent as ``tau + kd (dq + qdd dt - dq)`` with a small damping kd.
+targets, the QP's torques sent as the hybrid command ``tau + kp (q* - q) + kd (dq* - dq)``,
+q* and dq* integrated one tick ahead from the QP's accelerations (``hybrid_command``).
 """
 
 from __future__ import annotations
@@ -64,9 +65,11 @@ class RobotControl:
     wbc: WholeBodyController
     legs: LegCoordinator
     joint_damping: np.ndarray = field(init=False)  # (12,) kd [N m s/rad] sent with the torques
+    joint_stiffness: np.ndarray = field(init=False)  # (12,) kp [N m/rad] sent with the torques
 
     def __post_init__(self) -> None:
         self.joint_damping = np.full(12, self.wbc.settings.joint_damping_nm_s)
+        self.joint_stiffness = np.full(12, self.wbc.settings.joint_stiffness_nm_rad)
 
 
 @dataclass(frozen=True)
@@ -125,6 +128,21 @@ def mocap_state(measurement: RobotMeasurement, frame: MocapFrame, name: str) -> 
     return FloatingBaseState(position, quaternion, measurement.linear_velocity_in_world_m_s,
                              measurement.angular_velocity_in_body_rad_s,
                              measurement.position_rad, measurement.velocity_rad_s)
+
+
+def hybrid_command(output: WbcOutput, measurement: RobotMeasurement, tick_s: float,
+                   kp: np.ndarray, kd: np.ndarray) -> JointCommand:
+    """The hybrid joint command of a WBC tick: the QP's torque as feed-forward, and the joint
+    position and velocity its accelerations integrate to one tick (``tick_s``) ahead of the
+    measured joints as the motor PD's targets (``kp`` [N m/rad], ``kd`` [N m s/rad], (12,)).
+    Applied on time, the PD terms are small; applied late, they hold the leg near where it was
+    planned to be instead of integrating an old torque."""
+    acceleration = output.joint_acceleration_rad_s2
+    velocity = measurement.velocity_rad_s + acceleration * tick_s
+    position = (measurement.position_rad
+                + (measurement.velocity_rad_s + 0.5 * tick_s * acceleration) * tick_s)
+    return JointCommand(torque_nm=output.torque_nm, position_rad=position,
+                        velocity_rad_s=velocity, kp=kp, kd=kd)
 
 
 class TeamController:
@@ -357,9 +375,7 @@ class TeamController:
                 feet = robot.legs.swing_targets(gait_time, srb, reference[3:6])
             target = wbc_target(plan, i, t - plan_start_s, ts, stance, feet)
             output = robot.wbc.compute(state, target)
-            qdd_velocity = (measurement.velocity_rad_s
-                            + output.joint_acceleration_rad_s2 * self.tick_s)
-            command = JointCommand(torque_nm=output.torque_nm, velocity_rad_s=qdd_velocity,
-                                   kd=robot.joint_damping)
+            command = hybrid_command(output, measurement, self.tick_s, robot.joint_stiffness,
+                                     robot.joint_damping)
             steps.append(WbcStep(command, output, stance, feet[0]))
         return steps

@@ -5,11 +5,11 @@ One tick per ``rates.wbc_hz`` (500 Hz) on a ``LoopClock`` (``deploy.runtime.cloc
 ``porter deploy``). Every tick, in every state: read every robot (a lost link is a fault, not
 an exception) and the MoCap; estimate (base velocity from leg odometry and MoCap for robots
 whose driver measures none, ``core.estimation.base_velocity``); in ARMED / RUNNING the NMPC
-schedule (``deploy.nmpc_runtime.nmpc_schedule``: one timing grid, one plan hand-off, for a thread or
-for simulated time); ``SafetySupervisor.check``; the state's commands (posture moves, or each
-robot's WBC on the active plan), clipped when just past a torque limit; ``filter_commands``;
-send; the NMPC's decision where its runner answers later (``after_send``); record
-(``deploy.recording.loop_recording`` is the only writer of loop data). Times: the
+schedule (``deploy.nmpc_runtime.nmpc_schedule``: one timing grid, one plan hand-off);
+``SafetySupervisor.check``; the state's commands (posture moves, or each robot's WBC on the
+active plan, its last fresh command where its state is stale, ``deploy.runtime.stale_state``),
+clipped when just past a torque limit; ``filter_commands``; send; the NMPC's decision where its
+runner answers later (``after_send``); record (``deploy.recording.loop_recording``). Times: the
 loop clock minus the start of the run; the log uses the same times.
 
 States (``deploy.safety.supervisor``), by ``sequence``:
@@ -49,6 +49,7 @@ from deploy.runtime.controller import TeamController, WbcStep
 from deploy.runtime.gc_pauses import GcPauses
 from deploy.runtime.links import TeamLinks
 from deploy.runtime.loop_interfaces import Heartbeat, LoopHooks, LoopSettings
+from deploy.runtime.stale_state import StaleStateHold
 from deploy.runtime.timing import PeriodStats, TickStages
 from deploy.safety.checks import clip_torque, robot_limits
 from deploy.safety.posture import PostureMove, sitting_posture, standing_posture
@@ -78,8 +79,7 @@ class ControlLoop:
         self.control, self.links, self.settings, self.clock = control, links, settings, clock
         self.nmpc, self.recording, self.stop, self.duration_s = nmpc, recording, stop, duration_s
         self.sequence, self.confirm, self.preflight = sequence, confirm, preflight
-        self.hooks, self.out, self.verbose = hooks, out, verbose
-        self.watchdog = watchdog
+        self.hooks, self.out, self.verbose, self.watchdog = hooks, out, verbose, watchdog
         self.watchdog_tripped = False  # the watchdog took over during the run
         self.names = control.robot_names
         types = {robot.name: robot.robot_type for robot in control.robots}
@@ -98,11 +98,11 @@ class ControlLoop:
         self.since: dict[SafetyState, float] = {S.PREFLIGHT: 0.0}
         self.moves: dict[str, PostureMove] = {}
         self.saturations = dict.fromkeys(self.names, 0)  # ticks with a clipped torque
+        self.stale = StaleStateHold(self.names, settings.safety.stale_state_hold_ticks)
         self.report: PreflightReport | None = None
         self.frames: dict[str, MocapFrame] = {}  # at the start and the end of RUNNING
         self.heights: dict[str, list[float]] = {name: [] for name in self.names}
-        self.ended_by = ""
-        self.stopped_early = False
+        self.ended_by, self.stopped_early = "", False
         self._overruns_seen = 0  # the clock's overrun count at the last tick
         self.controlled_stop = False  # the braking backup ended the run with a sit-down
         self.recorder_failure: str | None = None
@@ -121,14 +121,14 @@ class ControlLoop:
             "transitions": [f"{t.time_s:.3f} s {t.text}" for t in supervisor.transitions],
             "nmpc_updates": nmpc.updates, "nmpc_deadline_misses": nmpc.deadline_misses,
             "nmpc_failed_updates": nmpc.solver_failures,
-            "nmpc_margin_flags": nmpc.margin_flags,
-            "nmpc_relaxed_plans": nmpc.relaxed_plans,
+            "nmpc_margin_flags": nmpc.margin_flags, "nmpc_relaxed_plans": nmpc.relaxed_plans,
             "braking_since_s": self.control.braking_since_s,
             "reference_held_s": round(self.control.reference_held_s, 3),
-            "controlled_stop": self.controlled_stop,
-            "recorder_failure": self.recorder_failure,
+            "controlled_stop": self.controlled_stop, "recorder_failure": self.recorder_failure,
             "torque_saturations": dict(self.saturations),
             "wbc_failed_ticks": supervisor.wbc_failures.failed_ticks,
+            "stale_state_held_ticks": dict(self.stale.held_ticks),
+            "longest_stale_state_ticks": dict(self.stale.longest_stale_ticks),
         }
 
     def say(self, text: str) -> None:
@@ -201,8 +201,7 @@ class ControlLoop:
         self.supervisor.check(SafetyInputs(
             t, estop.run_allowed if estop else False, estop.reason if estop else "no e-stop",
             age, measurements, link_errors, *flags, loop_overrun=overran))
-        plan_age_s = t - self.nmpc.plan_start_s
-        max_age_s = self.settings.rates.max_plan_age_s
+        plan_age_s, max_age_s = t - self.nmpc.plan_start_s, self.settings.rates.max_plan_age_s
         if self.supervisor.state == S.RUNNING and plan_age_s > max_age_s:
             self.supervisor.trigger_safe_stop(t, f"NMPC stalled: the plan is {plan_age_s:.3f} s "
                                               f"old (max {max_age_s} s)")
@@ -279,10 +278,12 @@ class ControlLoop:
                 self.supervisor.wbc_ticked(t, name, step.output.success, step.output.status)
             if self.hooks is not None:
                 self.hooks.wbc_stepped(steps)
-            # a new step only where clipped: dataclasses.replace costs ~10 us a robot
-            steps = [step if (command := self._saturate(name, step.command, measurements[name]))
-                     is step.command else replace(step, command=command)
-                     for name, step in zip(self.names, steps, strict=True)]
+            # a new step only where held or clipped: dataclasses.replace costs ~10 us a robot
+            held = [self.stale.command(n, measurements[n], s.command)
+                    for n, s in zip(self.names, steps, strict=True)]
+            steps = [step if (command := self._saturate(name, c, measurements[name])) is step.command
+                     else replace(step, command=command)
+                     for name, step, c in zip(self.names, steps, held, strict=True)]
             return {n: step.command for n, step in zip(self.names, steps, strict=True)}, steps
         return {}, None
 

@@ -73,6 +73,10 @@ class SupervisorSettings(StrictModel):
     max_consecutive_wbc_failures: int = Field(
         2, ge=0, le=25, description="more consecutive failed WBC QPs of one robot than this "
                                     "trip (a failed tick repeats the robot's last torques)")
+    stale_state_hold_ticks: int = Field(
+        2, ge=1, le=50, description="from this many loop ticks in a row without a new state of "
+                                    "a robot on, it gets its last fresh command again "
+                                    "(deploy.runtime.stale_state)")
     loop_overrun_budget: int = Field(
         50, ge=0, le=500, description="more control-loop ticks starting over a period late "
                                       "than this within deadline_window_s trip")

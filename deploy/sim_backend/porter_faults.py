@@ -7,7 +7,9 @@ porter's faults against the world's ground truth by as much.
 ``nmpc_failure``: from then on every NMPC plan is a failed solve (a solver that stops
 converging); ``recorder_failure``: every flight-log write fails with ENOSPC (a full disk);
 ``loop_stall``: the loop's thread hangs ``STALL_S`` of wall time once (a blocking call, a
-swapped-out page, a debugger), which the watchdog must catch.
+swapped-out page, a debugger), which the watchdog must catch; ``plan_late``: the first NMPC
+plan ready from then on is handed to the loop ``duration_s`` later (on the loop's clock), once
+(a solve that ran long, a descheduled NMPC process).
 """
 
 from __future__ import annotations
@@ -39,6 +41,8 @@ class PorterFaults:
         self.start_s = clock() if start_s is None else start_s
         self.due_s: dict[str, float] = {fault.kind: fault.at_s for fault in faults
                                          if fault.kind in PORTER_FAULTS}
+        self.late_by_s = next((fault.duration_s or 0.0 for fault in faults
+                               if fault.kind == "plan_late"), 0.0)
         self._stalled = False
 
     def active(self, kind: str) -> bool:
@@ -46,6 +50,8 @@ class PorterFaults:
         return due is not None and self.clock() - self.start_s >= due
 
     def runner(self, runner: NmpcRunner) -> NmpcRunner:
+        if "plan_late" in self.due_s:
+            runner = _LateRunner(runner, self)
         return _FailingRunner(runner, self) if "nmpc_failure" in self.due_s else runner
 
     def recorder(self, recorder: FlightRecorder | None) -> None:
@@ -99,3 +105,33 @@ class _FailingRunner:
 
     def __getattr__(self, name: str) -> Any:  # e.g. NmpcProcess.clock
         return getattr(self._runner, name)
+
+
+class _LateRunner(_FailingRunner):
+    """An NMPC runner that, from ``plan_late`` on, holds the first plan ready back
+    ``late_by_s`` on the loop's clock before handing it over (busy meanwhile), once."""
+
+    def __init__(self, runner: NmpcRunner, faults: PorterFaults) -> None:
+        super().__init__(runner, faults)
+        self._held: NmpcResult | None = None
+        self._release_s: float | None = None
+        self._done = False
+
+    @property
+    def busy(self) -> bool:
+        return self._held is not None or self._runner.busy
+
+    def take(self) -> NmpcResult | None:
+        faults = self._faults
+        if self._held is not None:
+            assert self._release_s is not None
+            if faults.clock() < self._release_s:
+                return None
+            held, self._held = self._held, None
+            return held
+        result = self._runner.take()
+        if result is not None and not self._done and faults.active("plan_late"):
+            self._done, self._held = True, result
+            self._release_s = faults.clock() + faults.late_by_s
+            return None
+        return result

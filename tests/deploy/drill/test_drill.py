@@ -19,12 +19,14 @@ def test_the_catalogue_has_every_family_and_at_least_thirty_faults() -> None:
     assert len(faults) >= 30
     assert len({f.name for f in faults}) == len(faults)
     assert {f.expect for f in faults} == {"safe stop", "sit down", "ignored", "refused",
-                                          "not started", "damped"}
+                                          "not started", "damped", "rides through"}
     for fault in faults:
         for injected in fault.config.get("sim", {}).get("faults", []):
             SimFault.model_validate(injected)  # every injected fault is a valid one
         if fault.expect in ("safe stop", "refused", "not started"):
             assert fault.cause, fault.name
+        if fault.expect == "rides through":
+            assert fault.evidence, fault.name
 
 
 def test_config_changes_merge_into_nested_sections() -> None:
@@ -85,6 +87,32 @@ def test_a_killed_porter_passes_only_if_every_robot_was_damped_in_time(tmp_path:
     assert not _judge_kill(fault, -9, None, log, tmp_path).passed
 
 
+def test_a_late_state_rides_through_only_if_it_completes_and_was_seen(tmp_path: Path) -> None:
+    fault = DrillFault("stall", "rides through", "", evidence="stale_state_held_ticks.go2_0")
+    log = tmp_path / "absent.mcap"
+
+    def summary(held: int, cause: str | None = None) -> dict:
+        return {"final_state": "DONE", "safe_stop": cause, "result": "ran 2 s",
+                "stale_state_held_ticks": {"go2_0": held, "go2_1": 0}}
+    good = _judge(fault, 0, summary(9), "", log, tmp_path)
+    assert good.passed and "stale_state_held_ticks.go2_0 9" in good.detail
+    assert not _judge(fault, 0, summary(0), "", log, tmp_path).passed  # never seen
+    assert not _judge(fault, 3, summary(9, "joint speed: go2_0"), "", log, tmp_path).passed
+    other = DrillFault("stall", "rides through", "", evidence="stale_state_held_ticks.go2_9")
+    assert not _judge(other, 0, summary(9), "", log, tmp_path).passed  # no such count
+
+
+def test_timed_faults_need_a_duration_and_others_refuse_one() -> None:
+    SimFault.model_validate({"at_s": 1.0, "kind": "robot_stall", "robot": "go2_0",
+                             "duration_s": 0.02})
+    with pytest.raises(ValueError, match="duration_s"):
+        SimFault.model_validate({"at_s": 1.0, "kind": "robot_stall", "robot": "go2_0"})
+    with pytest.raises(ValueError, match="duration_s"):
+        SimFault.model_validate({"at_s": 1.0, "kind": "estop_press", "duration_s": 0.02})
+    with pytest.raises(ValueError, match="duration_s"):
+        SimFault.model_validate({"at_s": 1.0, "kind": "plan_late", "duration_s": -0.05})
+
+
 def test_a_refused_config_must_exit_2_and_name_the_field(tmp_path: Path) -> None:
     fault = DrillFault("bad", "refused", "safety.damping_kd")
     err = "porter: deploy.yaml: safety.damping_kd: Input should be greater than 0\n"
@@ -98,7 +126,11 @@ def test_a_refused_config_must_exit_2_and_name_the_field(tmp_path: Path) -> None
 @pytest.mark.parametrize("name", ["e-stop pressed", "NatNet malformed packets",
                                   "config: damping_kd 0", "NMPC solver failure streak",
                                   "NMPC process killed",
-                                  "kill -9 of porter (the loop's own process)"])
+                                  "kill -9 of porter (the loop's own process)",
+                                  "robot go2_0 state stalls 20 ms",
+                                  "robot go2_1 state stalls 60 ms",
+                                  "robot go2_0 state stalls 150 ms (past its link budget)",
+                                  "NMPC plan 50 ms late"])
 def test_drill_faults_end_to_end(tmp_path: Path, name: str) -> None:
     (fault,) = [f for f in catalogue() if f.name == name]
     row = run_fault(fault, tmp_path / "run")

@@ -90,7 +90,14 @@ def test_one_update_and_wbc_ticks_give_commands_within_the_limits(run: SimRun) -
     for step in steps:
         assert step.output.success and np.all(np.isfinite(step.command.torque_nm))
         assert np.all(step.stance == 1.0)  # settling: all feet in stance
-        assert not step.command.kp.any() and step.command.kd.any()  # torque + damping only
+        # the hybrid command: the QP's torque, the firmware PD at the WBC's gains toward the
+        # joint targets one tick ahead of the measured joints
+        settings = control.robots[0].wbc.settings
+        assert np.all(step.command.kp == settings.joint_stiffness_nm_rad) and step.command.kp.any()
+        assert np.all(step.command.kd == settings.joint_damping_nm_s)
+    for step, m in zip(steps, measurements, strict=True):
+        drift = step.command.position_rad - m.position_rad
+        assert np.all(np.abs(drift) < 0.05), drift  # one 2 ms tick of motion, not a posture
 
 
 def _plan(relaxed: bool = False, success: bool = True, slack_m: float = 0.0) -> MpcPlan:

@@ -152,7 +152,10 @@ def test_paced_clock_runs_the_deploy_sequence_on_the_simulation() -> None:
     # (the tick a transition happens in still sends the old state's command)
     running = [c for t, c in tapped.sent if loop.since[loop.supervisor.state.RUNNING] < t
                < loop.since[loop.supervisor.state.SITTING_DOWN]]
-    assert running and all(not c.kp.any() and c.torque_nm.any() for c in running)  # WBC
+    # the WBC's hybrid command: its torque, with the firmware PD at the WBC's small gains
+    stiffness = control.robots[1].wbc.settings.joint_stiffness_nm_rad
+    assert 0 < stiffness < settings.posture.kp
+    assert running and all(np.all(c.kp == stiffness) and c.torque_nm.any() for c in running)
     sitting = [c for t, c in tapped.sent if t > loop.since[loop.supervisor.state.SITTING_DOWN]]
     assert sitting and all(c.kp.any() for c in sitting[:100])  # the posture PD
 
@@ -248,3 +251,47 @@ def test_persistent_infeasible_plans_brake_then_sit_down_in_a_controlled_stop(
         during = [command for t, command in driver.sent if sit_s + 0.01 < t < done_s]
         assert during and all(command.kp.any() for command in during)
     assert summary["nmpc_plans_applied"] > 0
+
+
+class Stalled(Tapped):
+    """A ``Tapped`` driver whose state stops advancing between ``from_s`` and ``until_s``
+    (simulated time): it repeats its last state there, as a late world or firmware would."""
+
+    def __init__(self, driver: RobotDriver, from_s: float, until_s: float) -> None:
+        super().__init__(driver)
+        self.from_s, self.until_s = from_s, until_s
+        self.last: RobotMeasurement | None = None
+
+    def read(self) -> RobotMeasurement:
+        measurement = self.driver.read()
+        if self.last is None or not self.from_s <= measurement.time_s < self.until_s:
+            self.last = measurement
+        self.reads += 1
+        self._time_s = measurement.time_s
+        return self.last
+
+
+def test_lockstep_a_stalled_state_resends_the_last_fresh_command() -> None:
+    run = SimRun(_scenario(0.5), CompiledCodeCache())
+    stalled = Stalled(run.links.drivers["go2_0"], from_s=0.3, until_s=0.32)
+    run.links.drivers["go2_0"] = stalled
+    try:
+        summary = run.run(verbose=False)
+    finally:
+        run.close()
+    safety = summary["safety"]
+    assert safety["safe_stop"] is None and safety["result"] == "ran 0.5 s"
+    hold_after = run.loop_settings.safety.stale_state_hold_ticks
+    # from 0.3 s on the driver repeats the state it read last before 0.3 s
+    fresh = [command for t, command in stalled.sent if t < 0.3][-1]
+    window = [command for t, command in stalled.sent if 0.3 <= t < 0.32 - 1e-9]
+    assert safety["longest_stale_state_ticks"]["go2_0"] == len(window) >= 9
+    assert safety["stale_state_held_ticks"] == {"go2_0": len(window) - hold_after + 1,
+                                                 "go2_1": 0}
+    for command in window[hold_after - 1:]:
+        np.testing.assert_array_equal(command.torque_nm, fresh.torque_nm)
+        np.testing.assert_array_equal(command.position_rad, fresh.position_rad)
+        np.testing.assert_array_equal(command.velocity_rad_s, fresh.velocity_rad_s)
+        assert command.kp.any() and command.kd.any()
+    # before the hold, the WBC's command on the repeated state is its own
+    assert hold_after == 1 or not np.array_equal(window[0].torque_nm, fresh.torque_nm)
