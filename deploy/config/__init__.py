@@ -10,8 +10,9 @@ from core.lazy_exports import lazy_exports
 
 _SOURCES = {
     "deploy.config.deploy_config": ["Go2Link", "A1Link", "MocapConfig", "CanConfig",
-        "PostureConfig", "RatesConfig", "PreflightConfig", "SimFault", "SimConfig", "DeployConfig",
+        "PostureConfig", "RatesConfig", "PreflightConfig", "SimConfig", "DeployConfig",
         "config_path", "load_deploy_config"],
+    "deploy.config.sim_faults": ["SimFault"],
     "deploy.config.files": ["ConfigError", "load_settings", "validate_settings"],
     "deploy.config.scenario": ["ObstacleSpec", "PushSpec", "DisturbanceSettings", "ReferenceSpec",
         "PayloadSpec", "ControllerSpec", "GaitSpec", "Scenario", "shipped_scenarios",

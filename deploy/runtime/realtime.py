@@ -50,7 +50,7 @@ import threading
 from collections.abc import Iterable, Iterator
 
 __all__ = ["RealtimePriorityError", "applied", "check", "check_cpus", "check_nice", "pin", "pinned",
-           "set_nice", "set_priority"]
+           "set_nice", "set_priority", "set_process_priority"]
 
 SETTING = "rates.loop_priority"
 NICE_SETTING = "nmpc.nice"
@@ -99,6 +99,20 @@ def set_priority(priority: int | None) -> tuple[int, int] | None:
     except (OSError, AttributeError) as error:
         raise RealtimePriorityError(_why_not(priority, error)) from error
     return previous
+
+
+def set_process_priority(priority: int, setting: str) -> str | None:
+    """Every thread of this process at ``SCHED_FIFO`` ``priority`` (the sim's world: its
+    physics thread and the DDS threads that carry its states); None once set, else why not
+    (naming ``setting``). Threads started later inherit it from the thread that starts them."""
+    try:
+        for task in os.listdir("/proc/self/task"):
+            os.sched_setscheduler(int(task), os.SCHED_FIFO, os.sched_param(priority))
+    except (OSError, AttributeError) as error:
+        reason = error.strerror if isinstance(error, OSError) else "no SCHED_FIFO here"
+        return (f"{setting}: cannot run at SCHED_FIFO priority {priority} ({reason}); allow "
+                f"it (root, CAP_SYS_NICE, `ulimit -r` >= {priority}) or set {setting}: null")
+    return None
 
 
 @contextlib.contextmanager

@@ -12,7 +12,9 @@ _SOURCES = {
     "deploy.sim_backend.backend": ["free_udp_port", "loopback_config", "SimBackend"],
     "deploy.sim_backend.world": ["ScaledClock", "CommandsAfterFault", "WorldSpec", "PipeBus",
         "lay_down", "SimWorld", "serve"],
+    "deploy.sim_backend.world_faults": ["inject_due_faults", "network_faults"],
 }
 __all__ = ["CommandsAfterFault", "PipeBus", "ScaledClock", "SimBackend", "SimWorld", "WorldSpec",
-           "free_udp_port", "lay_down", "loopback_config", "serve"]
+           "free_udp_port", "inject_due_faults", "lay_down", "loopback_config", "network_faults",
+           "serve"]
 __getattr__ = lazy_exports(__name__, _SOURCES)

@@ -20,7 +20,7 @@ import time
 from collections.abc import Callable
 from typing import Any
 
-from deploy.config.deploy_config import PORTER_FAULTS, SimFault
+from deploy.config.sim_faults import PORTER_FAULTS, SimFault
 from deploy.nmpc_runtime.nmpc_schedule import NmpcRunner
 from deploy.nmpc_runtime.nmpc_thread import NmpcResult
 from deploy.recording.flight_recorder import FlightRecorder

@@ -39,6 +39,7 @@ import dataclasses
 import json
 import math
 import signal
+import sys
 import threading
 import time
 from dataclasses import dataclass
@@ -49,12 +50,14 @@ import can
 import numpy as np
 
 from core.model.conventions import JOINT_COUNT, PAYLOAD_NAME
-from deploy.config.deploy_config import PORTER_FAULTS, DeployConfig, Go2Link
+from deploy.config.deploy_config import DeployConfig, Go2Link
 from deploy.config.scenario import Scenario
 from deploy.runtime.gc_pauses import freeze_startup_objects
 from deploy.runtime.process_names import name_this_process
+from deploy.runtime.realtime import set_process_priority
 from deploy.safety.checks import tilt_rad
 from deploy.safety.posture import sitting_posture
+from deploy.sim_backend.world_faults import inject_due_faults, network_faults
 from drivers.can.fake import FakeCanNode
 from drivers.interfaces import JointCommand, Pose
 from drivers.mujoco.scene import PHYSICS_TIMESTEP_S, build_team_scene
@@ -198,54 +201,6 @@ class SimWorld:
         self.faults_applied: list[dict[str, Any]] = []
         self.after_fault = {name: CommandsAfterFault() for name in self.robot_types}
 
-    def _inject_due_faults(self, elapsed_s: float) -> None:
-        for name, until_s in list(self.stalled_until.items()):  # robot_stall: publishing again
-            if elapsed_s >= until_s:
-                del self.stalled_until[name]
-                self.silent.discard(name)
-        while self.pending_faults and self.pending_faults[0].at_s <= elapsed_s:
-            fault = self.pending_faults.pop(0)
-            if fault.kind == "robot_stall" and fault.robot is not None:
-                assert fault.duration_s is not None  # SimFault requires it
-                self.silent.add(fault.robot)
-                self.stalled_until[fault.robot] = fault.at_s + fault.duration_s
-            if fault.kind == "estop_press" and self.can_node is not None:
-                self.can_node.press_estop()
-            elif fault.kind == "heartbeat_loss" and self.can_node is not None:
-                self.can_node.stop_heartbeat()
-            elif fault.kind == "mocap_loss":
-                self.mocap_stopped = True
-            elif fault.kind == "mocap_frozen":
-                self.natnet.frozen = True
-            elif fault.kind == "robot_silent" and fault.robot is not None:
-                self.silent.add(fault.robot)
-            elif fault.kind == "mocap_backwards":
-                self.natnet.rewind = True
-            elif fault.kind in ("mocap_foreign", "natnet_malformed"):
-                self.network_faults.add(fault.kind)
-            elif fault.kind == "robot_push" and fault.robot is not None:
-                self.simulation.apply_push(fault.robot, np.array([0.0, 300.0, 0.0]), 0.4)
-            elif fault.kind in ("robot_frozen", "robot_garbage", "robot_nan", "robot_bad_crc") \
-                    and fault.robot is not None:
-                fake = self.fakes[fault.robot]
-                if isinstance(fake, FakeGo2):  # load_deploy_config allows no other
-                    if fault.kind == "robot_frozen":
-                        fake.frozen = True
-                    else:
-                        fake.corrupt = fault.kind.removeprefix("robot_")
-            elif fault.kind in PORTER_FAULTS:
-                pass  # porter injects it itself (deploy.sim_backend.porter_faults); counted
-            self.faults_applied.append({"kind": fault.kind, "robot": fault.robot,
-                                        "time_s": self.simulation.time_s})
-
-    def _network_faults(self) -> None:
-        """Beside a frame: the same frame from another host, and a packet that is no NatNet
-        message (a truncated frame header)."""
-        if "mocap_foreign" in self.network_faults and self.natnet.last_packet is not None:
-            self.natnet.send_foreign(self.natnet.last_packet)
-        if "natnet_malformed" in self.network_faults:
-            self.natnet.send_packet(b"\x07\x00\xff\x7f" + bytes(9))
-
     def _received(self, name: str, command: JointCommand | None) -> None:
         """Once a fault is in: count what reaches the motors; damping = no stiffness, no
         feed-forward torque."""
@@ -335,7 +290,7 @@ class SimWorld:
                 with open(settings.orphan_report, "w") as report:
                     json.dump(self.ground_truth(), report)
                 return
-            self._inject_due_faults(sim.time_s - start_sim_s)
+            inject_due_faults(self, sim.time_s - start_sim_s)
             for name, fake in self.fakes.items():
                 if fake.poll_commands():
                     self._received(name, fake.last_command)
@@ -357,7 +312,7 @@ class SimWorld:
             if sim.time_s >= next_mocap_s:
                 if not self.mocap_stopped:
                     self.natnet.publish_frame()
-                    self._network_faults()
+                    network_faults(self)
                 next_mocap_s += mocap_period_s * max(1, math.ceil((sim.time_s - next_mocap_s)
                                                                   / mocap_period_s))
             if self.can_node is not None and sim.time_s >= next_ft_s:
@@ -387,6 +342,10 @@ def serve(spec: WorldSpec, control: Connection, can_link: Connection) -> None:
     except Exception as error:  # reported to the parent, which raises it
         control.send(("error", f"{type(error).__name__}: {error}"))
         return
+    priority = spec.config.sim.world_priority
+    problem = None if priority is None else set_process_priority(priority, "sim.world_priority")
+    if problem is not None:
+        print(f"porter-world: {problem} (normal scheduling instead)", file=sys.stderr)
     freeze_startup_objects()  # no full collection of the scene's objects while it runs
     try:
         start_monotonic_s = time.monotonic()

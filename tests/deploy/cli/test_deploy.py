@@ -344,6 +344,22 @@ def test_the_nmpc_cpus_are_distinct_and_apart_from_the_loops(tmp_path: Path, val
         load_deploy_config(_config(tmp_path, nmpc=values))
 
 
+@pytest.mark.parametrize(("rates", "sim", "message"), [
+    ({"loop_priority": 50}, {"world_priority": 50}, r"sim.world_priority: 50 must be below "
+                                                    r"rates.loop_priority \(50\)"),
+    ({"loop_priority": None}, {"world_priority": 10}, r"sim.world_priority: 10 must be below "
+                                                      r"rates.loop_priority \(None\)"),
+    ({"loop_priority": 50}, {"world_priority": 99}, "sim.world_priority"),
+])
+def test_the_world_priority_stays_below_the_loops(tmp_path: Path, rates: dict, sim: dict,
+                                                  message: str) -> None:
+    with pytest.raises(ConfigError, match=message):
+        load_deploy_config(_config(tmp_path, rates=rates, sim=sim))
+    fine, _ = load_deploy_config(_config(tmp_path, rates={"loop_priority": 50},
+                                         sim={"world_priority": 40}))
+    assert fine.sim.world_priority == 40
+
+
 @pytest.mark.parametrize(("section", "values", "field"), [
     ("safety", {"damping_kd": 0.0}, "safety.damping_kd"),
     ("safety", {"max_tilt_rad": 100.0}, "safety.max_tilt_rad"),

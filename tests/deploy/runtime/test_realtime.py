@@ -64,6 +64,35 @@ def test_the_priority_holds_inside_and_the_old_policy_returns_after() -> None:
     assert result.stdout.strip() in ("applied", "refused")
 
 
+def test_a_whole_process_goes_to_fifo_every_thread_or_says_why_not() -> None:
+    """The sim world's priority: every thread of the process (a helper thread too), or the
+    reason naming the setting; without the privilege, always the reason."""
+    imports = "import os, threading\nfrom deploy.runtime import realtime\n"
+    code = textwrap.dedent("""
+        stop = threading.Event()
+        helper = threading.Thread(target=stop.wait)
+        helper.start()
+        problem = realtime.set_process_priority(30, "sim.world_priority")
+        if problem is None:
+            tasks = [int(t) for t in os.listdir("/proc/self/task")]
+            policies = {os.sched_getscheduler(t) for t in tasks}
+            assert len(tasks) >= 2 and policies == {os.SCHED_FIFO}, policies
+            assert {os.sched_getparam(t).sched_priority for t in tasks} == {30}
+            print("applied")
+        else:
+            print(problem)
+        stop.set()
+        helper.join()
+    """)
+    result = _child(imports + code)
+    assert result.returncode == 0, result.stderr
+    assert result.stdout.strip() == "applied" or "sim.world_priority: cannot run" in result.stdout
+    refused = _child(_UNPRIVILEGED + imports + "drop()\n" + code)
+    assert refused.returncode == 0, refused.stderr
+    assert "sim.world_priority: cannot run at SCHED_FIFO priority 30" in refused.stdout
+    assert "sim.world_priority: null" in refused.stdout
+
+
 def test_without_the_privilege_it_is_refused_naming_the_setting() -> None:
     result = _child(_UNPRIVILEGED + textwrap.dedent("""
         import os
