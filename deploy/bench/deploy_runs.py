@@ -45,6 +45,8 @@ def scaled_config(config: Path | str, time_scale: float, directory: Path,
     data["sim"] = {**(data.get("sim") or {}), "time_scale": time_scale}
     if loop_priority != CONFIGURED:
         data["rates"] = {**(data.get("rates") or {}), "loop_priority": loop_priority}
+        if loop_priority is None:  # the world's priority must stay below the loop's: none
+            data["sim"]["world_priority"] = None
     path = directory / f"{source.stem}-x{time_scale:g}-p{loop_priority}.yaml"
     path.write_text(yaml.safe_dump(data, sort_keys=False))
     return path
