@@ -65,8 +65,7 @@ class FaultTimeline:
 def fault_timelines(log: LogFile, window_s: float = WINDOW_S) -> list[FaultTimeline]:
     """One timeline per safe stop of ``log``, in time order (empty: the run had none)."""
     stops = [(item.time_s, item.message.text) for item in log.messages(["/events"])
-             if item.message.source == "safety" and "SAFE_STOP" in item.message.text
-             and "-> SAFE_STOP" in item.message.text]
+             if item.message.source == "safety" and "-> SAFE_STOP" in item.message.text]
     if not stops:
         return []
     counts, _, _ = log.message_counts()

@@ -107,7 +107,8 @@ def set_process_priority(priority: int, setting: str) -> str | None:
     (naming ``setting``). Threads started later inherit it from the thread that starts them."""
     try:
         for task in os.listdir("/proc/self/task"):
-            os.sched_setscheduler(int(task), os.SCHED_FIFO, os.sched_param(priority))
+            with contextlib.suppress(ProcessLookupError):  # a thread that ended meanwhile
+                os.sched_setscheduler(int(task), os.SCHED_FIFO, os.sched_param(priority))
     except (OSError, AttributeError) as error:
         reason = error.strerror if isinstance(error, OSError) else "no SCHED_FIFO here"
         return (f"{setting}: cannot run at SCHED_FIFO priority {priority} ({reason}); allow "
