@@ -130,10 +130,14 @@ class NmpcRunConfig(StrictModel):
     interpreter lock), or ``thread``, a thread of the loop's process. ``executor``: the ADMM
     local solves ``serial`` in the NMPC's process, one ``process`` per agent, or ``zenoh``:
     ``porter agent`` processes over Zenoh (the scenario's ``controller.network``); None keeps
-    the scenario's ``controller.executor`` (a different explicit value there is an error)."""
+    the scenario's ``controller.executor`` (a different explicit value there is an error).
+    ``admm_iterations``: ADMM iterations per NMPC update on this computer; None keeps the
+    scenario's ``controller.admm_iterations`` (the paper's 2; a different explicit value there
+    is an error)."""
 
     runner: Literal["process", "thread"] = "process"
     executor: Literal["serial", "process", "zenoh"] | None = None
+    admm_iterations: int | None = Field(None, ge=1, le=20)
     # nice value of the NMPC's process (runner: process; deploy.runtime.realtime): below 0 it
     # gets the CPU before normal-priority processes. A value it cannot take is an error on
     # robots, a warning (and 0) in simulation.
@@ -301,6 +305,22 @@ def config_path(path_or_name: Path | str) -> Path:
     return CONFIG_DIR / f"{path_or_name}.yaml"
 
 
+def _with_nmpc_overrides(path: Path, config: DeployConfig, scenario: Scenario) -> Scenario:
+    """The scenario with ``nmpc.executor`` / ``nmpc.admm_iterations`` where the config sets
+    them; ``ConfigError`` where the scenario sets a different value explicitly."""
+    controller = scenario.controller
+    for name, field in (("executor", "executor"), ("admm_iterations", "admm_iterations")):
+        value = getattr(config.nmpc, name)
+        if value is None or value == getattr(controller, field):
+            continue
+        if field in controller.model_fields_set:
+            raise ConfigError(f"{path}: nmpc.{name}: {value!r}, but the scenario sets "
+                              f"controller.{field}: {getattr(controller, field)!r}; set one "
+                              "of them")
+        controller = controller.model_copy(update={field: value})
+    return scenario.model_copy(update={"controller": controller})
+
+
 def load_deploy_config(path_or_name: Path | str) -> tuple[DeployConfig, Scenario]:
     """The config and its scenario, cross-checked (robots = the scenario's team, one MoCap
     obstacle entry at most per obstacle). Raises ``ConfigError`` naming the field."""
@@ -316,14 +336,7 @@ def load_deploy_config(path_or_name: Path | str) -> tuple[DeployConfig, Scenario
     except ConfigError as error:
         raise ConfigError(f"{path}: scenario: {error} (shipped: "
                           f"{', '.join(shipped_scenarios())})") from None
-    executor = config.nmpc.executor
-    controller = scenario.controller
-    if executor is not None and executor != controller.executor:
-        if "executor" in controller.model_fields_set:
-            raise ConfigError(f"{path}: nmpc.executor: {executor!r}, but the scenario sets "
-                              f"controller.executor: {controller.executor!r}; set one of them")
-        scenario = scenario.model_copy(update={"controller": controller.model_copy(
-            update={"executor": executor})})
+    scenario = _with_nmpc_overrides(path, config, scenario)
     if config.nmpc.runner == "thread":
         for field, value, unset in (("nice", config.nmpc.nice, 0), ("cpus", config.nmpc.cpus, None)):
             if value != unset:

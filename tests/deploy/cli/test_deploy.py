@@ -72,8 +72,7 @@ def test_deploy_on_the_sim_backend_stands_walks_carries_and_sits_down(
     assert summary["watchdog"] == {"enabled": True, "tripped": False,
                                    "priority": summary["loop_priority"]}
     assert ("rates.loop_priority: cannot run the loop" in captured.err) is not allowed
-    nice_allowed = realtime.check_nice(-10) is None
-    assert summary["nmpc_nice"] == (-10 if nice_allowed else 0)
+    assert summary["nmpc_nice"] == 0  # the shipped config's (normal on two cores)
     cpus = os.sched_getaffinity(0)  # the shipped CPUs where this machine has them
     assert summary["loop_cpu"] == (0 if 0 in cpus else None)
     assert summary["nmpc_cpus"] == ([1] if 1 in cpus else None)
@@ -322,6 +321,31 @@ def test_the_nmpc_executor_overrides_the_scenario_default_and_conflicts_are_name
     data["nmpc"] = {"runner": "fiber"}
     path.write_text(yaml.safe_dump(data))
     with pytest.raises(ConfigError, match="nmpc.runner"):
+        load_deploy_config(path)
+
+
+def test_the_nmpc_admm_iterations_override_the_scenario_default_and_conflicts_are_named(
+        tmp_path: Path) -> None:
+    scenario = yaml.safe_load((CONFIG_DIR.parent / "scenarios" / "two_go2.yaml").read_text())
+    (tmp_path / "mine.yaml").write_text(yaml.safe_dump(scenario))
+    path = _config(tmp_path, nmpc={"admm_iterations": 3})
+    data = yaml.safe_load(path.read_text())
+    data["scenario"] = "mine.yaml"
+    path.write_text(yaml.safe_dump(data))
+    loaded = load_deploy_config(path)[1]
+    assert loaded.controller.admm_iterations == 3
+    assert loaded.mpc_settings().admm.iterations == 3  # what the NMPC is built with
+    scenario["controller"] = {**scenario.get("controller", {}), "admm_iterations": 2}
+    (tmp_path / "mine.yaml").write_text(yaml.safe_dump(scenario))
+    with pytest.raises(ConfigError, match=r"nmpc.admm_iterations: 3, but the scenario sets "
+                       r"controller.admm_iterations: 2"):
+        load_deploy_config(path)
+    data["nmpc"]["admm_iterations"] = 2  # the same value twice is no conflict
+    path.write_text(yaml.safe_dump(data))
+    assert load_deploy_config(path)[1].controller.admm_iterations == 2
+    data["nmpc"]["admm_iterations"] = 0
+    path.write_text(yaml.safe_dump(data))
+    with pytest.raises(ConfigError, match="nmpc.admm_iterations"):
         load_deploy_config(path)
     data["nmpc"] = {"runner": "thread", "nice": -10}  # a thread has the loop's process
     path.write_text(yaml.safe_dump(data))

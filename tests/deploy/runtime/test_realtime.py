@@ -145,7 +145,8 @@ def test_deploy_refuses_on_robots_and_warns_in_simulation(backend: str) -> None:
         from deploy.config.deploy_config import load_deploy_config
         from deploy.config.files import ConfigError
         config, _ = load_deploy_config("two_go2")
-        # the shipped config asks for both
+        # the shipped loop priority, and an NMPC nice below 0 (a robot computer's setting)
+        config = config.model_copy(update={{"nmpc": config.nmpc.model_copy(update={{"nice": -10}})}})
         assert (config.rates.loop_priority, config.nmpc.nice) == (50, -10)
         drop()
         said = []
