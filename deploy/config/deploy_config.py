@@ -309,12 +309,12 @@ def _with_nmpc_overrides(path: Path, config: DeployConfig, scenario: Scenario) -
     """The scenario with ``nmpc.executor`` / ``nmpc.admm_iterations`` where the config sets
     them; ``ConfigError`` where the scenario sets a different value explicitly."""
     controller = scenario.controller
-    for name, field in (("executor", "executor"), ("admm_iterations", "admm_iterations")):
-        value = getattr(config.nmpc, name)
+    for field in ("executor", "admm_iterations"):  # the same name in both models
+        value = getattr(config.nmpc, field)
         if value is None or value == getattr(controller, field):
             continue
         if field in controller.model_fields_set:
-            raise ConfigError(f"{path}: nmpc.{name}: {value!r}, but the scenario sets "
+            raise ConfigError(f"{path}: nmpc.{field}: {value!r}, but the scenario sets "
                               f"controller.{field}: {getattr(controller, field)!r}; set one "
                               "of them")
         controller = controller.model_copy(update={field: value})

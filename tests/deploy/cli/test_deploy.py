@@ -322,6 +322,14 @@ def test_the_nmpc_executor_overrides_the_scenario_default_and_conflicts_are_name
     path.write_text(yaml.safe_dump(data))
     with pytest.raises(ConfigError, match="nmpc.runner"):
         load_deploy_config(path)
+    data["nmpc"] = {"runner": "thread", "nice": -10}  # a thread has the loop's process
+    path.write_text(yaml.safe_dump(data))
+    with pytest.raises(ConfigError, match="nmpc.nice: -10 needs nmpc.runner: process"):
+        load_deploy_config(path)
+    data["nmpc"] = {"runner": "thread", "cpus": [1]}  # so do its CPUs
+    path.write_text(yaml.safe_dump(data))
+    with pytest.raises(ConfigError, match=re.escape("nmpc.cpus: [1] needs nmpc.runner: process")):
+        load_deploy_config(path)
 
 
 def test_the_nmpc_admm_iterations_override_the_scenario_default_and_conflicts_are_named(
@@ -346,14 +354,6 @@ def test_the_nmpc_admm_iterations_override_the_scenario_default_and_conflicts_ar
     data["nmpc"]["admm_iterations"] = 0
     path.write_text(yaml.safe_dump(data))
     with pytest.raises(ConfigError, match="nmpc.admm_iterations"):
-        load_deploy_config(path)
-    data["nmpc"] = {"runner": "thread", "nice": -10}  # a thread has the loop's process
-    path.write_text(yaml.safe_dump(data))
-    with pytest.raises(ConfigError, match="nmpc.nice: -10 needs nmpc.runner: process"):
-        load_deploy_config(path)
-    data["nmpc"] = {"runner": "thread", "cpus": [1]}  # so do its CPUs
-    path.write_text(yaml.safe_dump(data))
-    with pytest.raises(ConfigError, match=re.escape("nmpc.cpus: [1] needs nmpc.runner: process")):
         load_deploy_config(path)
 
 
