@@ -35,6 +35,7 @@ class LinkMonitor:
     clock: Callable[[], float]
     received: int = 0
     rejected: Counter[str] = field(default_factory=Counter)
+    rejected_since_valid: Counter[str] = field(default_factory=Counter)  # since the last accept
     reconnections: int = 0
     last_receive_time_s: float | None = None
     # reason -> what to tell the operator when nothing valid ever arrived and messages were
@@ -56,6 +57,8 @@ class LinkMonitor:
         now_s = self.clock()
         self.received += 1
         self.last_receive_time_s = now_s
+        if self.rejected_since_valid:
+            self.rejected_since_valid.clear()
         if self._lost:
             self._lost = False
             self.reconnections += 1
@@ -64,6 +67,13 @@ class LinkMonitor:
     def reject(self, reason: str) -> None:
         """Count one message rejected for ``reason`` (a short tag, e.g. ``"crc"``)."""
         self.rejected[reason] += 1
+        self.rejected_since_valid[reason] += 1
+
+    def since_valid_note(self) -> str:
+        """What arrived since the last valid message and was rejected, for a fault's text
+        ("" when nothing was)."""
+        rejected = self.rejected_since_valid
+        return f"rejected since its last valid state: {dict(rejected)}" if rejected else ""
 
     def check(self) -> None:
         """Raise ``LinkLostError`` when no valid message arrived yet, or none within the last

@@ -26,8 +26,7 @@ plan older than ``rates.max_plan_age_s`` while RUNNING trips the safe stop (NMPC
 Infeasible plans are no fault: after ``MpcSettings.braking.after_flagged_updates`` of them in a
 row the controller brakes and holds (``TeamController.plan_taken``), and
 ``braking.controlled_stop_s`` later RUNNING -> SITTING_DOWN -> DONE (a controlled stop), in both
-sequences.
-Every transition goes to the flight recorder as an event (source ``safety``).
+sequences. Every transition goes to the flight recorder as an event (source ``safety``).
 """
 
 from __future__ import annotations
@@ -49,7 +48,7 @@ from deploy.runtime.controller import TeamController, WbcStep
 from deploy.runtime.gc_pauses import GcPauses
 from deploy.runtime.links import TeamLinks
 from deploy.runtime.loop_interfaces import Heartbeat, LoopHooks, LoopSettings
-from deploy.runtime.stale_state import StaleStateHold
+from deploy.runtime.stale_state import StaleStateHold, link_notes
 from deploy.runtime.timing import PeriodStats, TickStages
 from deploy.safety.checks import clip_torque, robot_limits
 from deploy.safety.posture import PostureMove, sitting_posture, standing_posture
@@ -98,7 +97,8 @@ class ControlLoop:
         self.since: dict[SafetyState, float] = {S.PREFLIGHT: 0.0}
         self.moves: dict[str, PostureMove] = {}
         self.saturations = dict.fromkeys(self.names, 0)  # ticks with a clipped torque
-        self.stale = StaleStateHold(self.names, settings.safety.stale_state_hold_ticks)
+        self.stale = StaleStateHold(self.names, settings.safety.stale_state_hold_ticks,
+                                    self.wbc_stats.period_s)
         self.report: PreflightReport | None = None
         self.frames: dict[str, MocapFrame] = {}  # at the start and the end of RUNNING
         self.heights: dict[str, list[float]] = {name: [] for name in self.names}
@@ -196,11 +196,12 @@ class ControlLoop:
         stages.mark("nmpc")
         estop = self.links.estop.status() if self.links.estop is not None else None
         age = self.links.tracker.age_s(self.required_bodies) if self.links.tracker else None
-        overruns = self.clock.overruns
-        overran, self._overruns_seen = overruns > self._overruns_seen, overruns
+        overran, self._overruns_seen = self.clock.overruns > self._overruns_seen, self.clock.overruns
+        stale = self.stale.stale_s()
         self.supervisor.check(SafetyInputs(
             t, estop.run_allowed if estop else False, estop.reason if estop else "no e-stop",
-            age, measurements, link_errors, *flags, loop_overrun=overran))
+            age, measurements, link_errors, *flags, loop_overrun=overran, stale_state_s=stale,
+            link_notes=link_notes(self.links.drivers, stale) if stale else {}))
         plan_age_s, max_age_s = t - self.nmpc.plan_start_s, self.settings.rates.max_plan_age_s
         if self.supervisor.state == S.RUNNING and plan_age_s > max_age_s:
             self.supervisor.trigger_safe_stop(t, f"NMPC stalled: the plan is {plan_age_s:.3f} s "
@@ -389,8 +390,7 @@ class ControlLoop:
         """The flight recorder stopped writing: a safe stop, or a warning, by its settings."""
         self.recorder_failure = failure
         self.say(f"[{t:7.3f} s] ERROR: flight recorder failed: {failure}")
-        if self.recording is not None \
-                and self.recording.recorder.settings.on_failure == "safe_stop":
+        if self.recording is not None and self.recording.recorder.settings.on_failure == "safe_stop":
             self.supervisor.trigger_safe_stop(t, f"flight recorder failed: {failure}")
 
     def _sit_down(self, t: float, measurements: dict[str, RobotMeasurement], why: str) -> None:

@@ -77,6 +77,12 @@ class SupervisorSettings(StrictModel):
         2, ge=1, le=50, description="from this many loop ticks in a row without a new state of "
                                     "a robot on, it gets its last fresh command again "
                                     "(deploy.runtime.stale_state)")
+    stale_state_budget_s: float = Field(
+        0.04, ge=0.004, le=1.0, description="a RUNNING robot whose state has not advanced for "
+                                            "longer than this [s] trips: up to it the motors "
+                                            "hold its last fresh command, past it the hold no "
+                                            "longer carries a leg (a 60 ms stall whipped a calf "
+                                            "to 36 rad/s)")
     loop_overrun_budget: int = Field(
         50, ge=0, le=500, description="more control-loop ticks starting over a period late "
                                       "than this within deadline_window_s trip")

@@ -111,6 +111,9 @@ class SafetyInputs:
     solver_failed: bool | None = None  # on ticks where an NMPC update finished
     deadline_missed: bool | None = None  # on ticks where an NMPC update finished
     loop_overrun: bool = False  # this tick started more than a loop period late
+    # robot -> time [s] its state has not advanced (``deploy.runtime.stale_state``; RUNNING)
+    stale_state_s: dict[str, float] = field(default_factory=dict)
+    link_notes: dict[str, str] = field(default_factory=dict)  # robot -> its rejected messages
 
 
 class SafetySupervisor:
@@ -216,6 +219,11 @@ class SafetySupervisor:
             faults.append(f"e-stop: run not allowed ({inputs.estop_reason})")
         faults += [f"robot link lost: {name}: {message}"
                    for name, message in inputs.link_errors.items()]
+        faults += [f"robot state stale: {name}: no new state for {stale_s * 1000:.0f} ms "
+                   f"(budget {settings.stale_state_budget_s * 1000:.0f} ms)"
+                   + (f"; {inputs.link_notes[name]}" if name in inputs.link_notes else "")
+                   for name, stale_s in inputs.stale_state_s.items()
+                   if stale_s > settings.stale_state_budget_s + 1e-9]
         mocap = mocap_fault(inputs.mocap_age_s, settings, require_frame=self._has_been_armed)
         if mocap is not None:
             faults.append(mocap)

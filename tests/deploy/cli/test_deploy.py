@@ -162,8 +162,9 @@ FAULT_AT_S = 3.0  # simulated s after the world starts: running by then (stand-u
 @pytest.mark.parametrize(("fault", "cause", "reaction_s"), [
     ({"kind": "estop_press"}, "e-stop: run not allowed (e-stop pressed", 0.05),
     ({"kind": "mocap_loss"}, "MoCap lost: no frame for", 0.1 + 0.05),
-    ({"kind": "robot_silent", "robot": "go2_1"}, "robot link lost: go2_1", 0.1 + 0.05),
-    ({"kind": "robot_frozen", "robot": "go2_0"}, "'frozen tick'", 0.1 + 0.05),
+    # the stale-state budget (40 ms) trips before the link budget (0.1 s)
+    ({"kind": "robot_silent", "robot": "go2_1"}, "robot state stale: go2_1", 0.04 + 0.05),
+    ({"kind": "robot_frozen", "robot": "go2_0"}, "'frozen tick'", 0.04 + 0.05),
     # 12 repeated frames at 120 Hz make a body unseen, then the MoCap timeout
     ({"kind": "mocap_frozen"}, "MoCap lost: no frame for", 12 / 120 + 0.1 + 0.05),
 ], ids=["estop", "mocap", "link", "frozen", "mocap_frozen"])

@@ -7,8 +7,9 @@ import pytest
 
 from core.locomotion.whole_body_control import WbcOutput
 from deploy.runtime.controller import hybrid_command
-from deploy.runtime.stale_state import StaleStateHold
+from deploy.runtime.stale_state import StaleStateHold, link_notes
 from drivers.interfaces import JointCommand, RobotMeasurement
+from drivers.link_errors import LinkMonitor
 
 
 def measurement(time_s: float, position: float = 0.1, velocity: float = 0.0) -> RobotMeasurement:
@@ -22,7 +23,7 @@ def command(torque: float) -> JointCommand:
 
 
 def test_fresh_states_pass_the_computed_command_through() -> None:
-    hold = StaleStateHold(["a"], hold_after_ticks=2)
+    hold = StaleStateHold(["a"], hold_after_ticks=2, tick_s=0.002)
     for k in range(5):
         computed = command(float(k))
         assert hold.command("a", measurement(0.002 * k), computed) is computed
@@ -32,7 +33,7 @@ def test_fresh_states_pass_the_computed_command_through() -> None:
 
 
 def test_a_stalled_state_gets_the_last_fresh_command_from_the_nth_tick() -> None:
-    hold = StaleStateHold(["a", "b"], hold_after_ticks=2)
+    hold = StaleStateHold(["a", "b"], hold_after_ticks=2, tick_s=0.002)
     fresh = command(1.0)
     assert hold.command("a", measurement(0.0), fresh) is fresh
     hold.command("b", measurement(0.0), command(5.0))
@@ -55,7 +56,20 @@ def test_a_stalled_state_gets_the_last_fresh_command_from_the_nth_tick() -> None
 
 def test_hold_after_ticks_must_be_positive() -> None:
     with pytest.raises(ValueError, match="hold_after_ticks"):
-        StaleStateHold(["a"], hold_after_ticks=0)
+        StaleStateHold(["a"], hold_after_ticks=0, tick_s=0.002)
+
+
+def test_the_stale_time_of_each_robot_is_its_repeated_ticks_times_the_period() -> None:
+    hold = StaleStateHold(["a", "b"], hold_after_ticks=2, tick_s=0.002)
+    hold.command("a", measurement(0.0), command(1.0))
+    hold.command("b", measurement(0.0), command(1.0))
+    assert hold.stale_s() == {}
+    for k in range(1, 6):  # a repeats its state, b advances
+        hold.command("a", measurement(0.0), command(1.0))
+        hold.command("b", measurement(0.002 * k), command(1.0))
+    assert hold.stale_s() == {"a": pytest.approx(0.010)}
+    hold.command("a", measurement(0.02), command(1.0))
+    assert hold.stale_s() == {}
 
 
 def test_the_hybrid_command_integrates_the_qp_accelerations_one_tick_ahead() -> None:
@@ -78,3 +92,24 @@ def test_the_hybrid_command_integrates_the_qp_accelerations_one_tick_ahead() -> 
     late_q = hybrid.position_rad + hybrid.velocity_rad_s * 0.018
     pd = hybrid.kp * (hybrid.position_rad - late_q)
     assert np.all(np.sign(pd) == -np.sign(hybrid.velocity_rad_s))
+
+
+def test_a_stale_robot_is_named_with_what_its_link_rejected_since_its_last_valid_state() -> None:
+    now = [0.0]
+    link = LinkMonitor("go2 rt/lowstate", 0.1, lambda: now[0])
+
+    class Driver:  # a wire driver's link monitor; the lockstep's robots have none
+        def __init__(self) -> None:
+            self.link = link
+
+    drivers = {"a": Driver(), "b": object()}
+    link.accept()
+    assert link_notes(drivers, ["a", "b"]) == {}  # nothing rejected since the valid state
+    link.reject("frozen tick")
+    link.reject("frozen tick")
+    link.reject("crc")
+    assert link_notes(drivers, ["a", "b"]) == {
+        "a": "rejected since its last valid state: {'frozen tick': 2, 'crc': 1}"}
+    assert link_notes(drivers, ["b"]) == {}
+    link.accept()  # a valid state again: the note starts over, the totals stay
+    assert link_notes(drivers, ["a"]) == {} and link.rejected_total == 3
