@@ -155,6 +155,29 @@ def test_the_mixed_team_completes_the_full_scenario(tmp_path: Path) -> None:
     assert np.linalg.norm(np.asarray(summary["payload"]["end_m"][0:2]) - goal) < 0.3
 
 
+def test_the_four_robot_config_names_every_robot_of_its_scenario() -> None:
+    """four_go2.yaml: one Go2 entry and one MoCap body per agent of ``four_go2``, F/T sensor i
+    on robot i, at the half speed it is measured at (README, "Four robots")."""
+    config, scenario = load_deploy_config(CONFIG_DIR / "four_go2.yaml")
+    names = [agent.name for agent in scenario.team]
+    assert list(config.robots) == names and len(names) == 4
+    assert {config.robots[name].driver for name in names} == {"go2"}
+    assert set(config.mocap.bodies) == {*names, "payload"}
+    assert config.sim.time_scale == 0.5 and config.nmpc.admm_iterations == 1
+
+
+@pytest.mark.slow
+def test_four_robots_carry_the_payload_and_sit_down(tmp_path: Path) -> None:
+    """Four Go2 through the whole deploy sequence for 2 s of RUNNING: done, no safe stop."""
+    config = write_config(shipped_config_data("four_go2"), tmp_path / "deploy.yaml")
+    code = main(["deploy", "--config", str(config), "--backend", "sim", "--yes",
+                 "--duration", "2", "--record", str(tmp_path / "run.mcap")])
+    assert code == 0
+    summary = LogFile(tmp_path / "run.mcap").summary()
+    assert summary is not None and summary["final_state"] == "DONE"
+    assert summary["safe_stop"] is None and len(summary["sim_ground_truth"]["robots"]) == 4
+
+
 FAULT_AT_S = 3.0  # simulated s after the world starts: running by then (stand-up 1.2 s)
 
 
