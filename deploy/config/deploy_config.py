@@ -180,6 +180,15 @@ class SimConfig(StrictModel):
     # below rates.loop_priority: the physics never waits behind the NMPC or porter's helper
     # threads; null: normal scheduling. One that cannot be set: a warning, normal scheduling.
     world_priority: int | None = Field(None, ge=1, le=98)
+    # the CPUs of the world's process (every thread), apart from rates.loop_cpu; null: any.
+    # Beside an NMPC at a positive nice on the same core, the world gets that core first
+    # without any privilege. Unavailable ones: a warning, any CPU.
+    world_cpus: list[Annotated[int, Field(ge=0, le=1023)]] | None = Field(None, min_length=1)
+
+    @field_validator("world_cpus")
+    @classmethod
+    def _distinct(cls, cpus: list[int] | None) -> list[int] | None:
+        return NmpcRunConfig._distinct(cpus)
     # ``safety`` fields replaced for this backend only (e.g. budgets this machine cannot meet)
     safety_overrides: dict[str, float | int] = {}
     # faults for tests: what the fake world leaves out
@@ -244,10 +253,12 @@ class DeployConfig(StrictModel):
 
     @model_validator(mode="after")
     def _cpus_apart(self) -> DeployConfig:
-        cpus, loop_cpu = self.nmpc.cpus, self.rates.loop_cpu
-        if cpus is not None and loop_cpu in cpus:
-            raise ValueError(f"nmpc.cpus: {cpus} includes rates.loop_cpu {loop_cpu}: the "
-                             "loop's core is its own; set them apart or one of them to null")
+        loop_cpu = self.rates.loop_cpu
+        for setting, cpus in (("nmpc.cpus", self.nmpc.cpus),
+                              ("sim.world_cpus", self.sim.world_cpus)):
+            if cpus is not None and loop_cpu in cpus:
+                raise ValueError(f"{setting}: {cpus} includes rates.loop_cpu {loop_cpu}: the "
+                                 "loop's core is its own; set them apart or one of them to null")
         return self
 
     @model_validator(mode="after")

@@ -25,8 +25,8 @@ value below the current one needs ``CAP_SYS_NICE`` or ``RLIMIT_NICE`` (``nice`` 
 limits.conf).
 
 CPU affinity (``rates.loop_cpu``, ``nmpc.cpus``): the loop's process on one core while it
-runs, the NMPC's process (and its ADMM workers) on others, the rest (the sim's world) where
-the kernel puts it. At time scale 1.0 on two cores the NMPC kept 53-54 Hz with 27-35 late
+runs, the NMPC's process (and its ADMM workers) on others, the sim's world on ``sim.world_cpus``
+(or where the kernel puts it). At time scale 1.0 on two cores the NMPC kept 53-54 Hz with 27-35 late
 updates in 10 s against 50-51 Hz and 56-65 unpinned (update p99 17-18 against 23 ms): it no
 longer migrates after the loop's wake-ups (README). Every thread of the loop's process goes
 to the loop's core, not only the loop's: a helper thread (MoCap client, CAN, the recorder)
@@ -50,7 +50,7 @@ import threading
 from collections.abc import Iterable, Iterator
 
 __all__ = ["RealtimePriorityError", "applied", "check", "check_cpus", "check_nice", "pin", "pinned",
-           "set_nice", "set_priority", "set_process_priority"]
+           "set_nice", "set_priority", "set_process_cpus", "set_process_priority"]
 
 SETTING = "rates.loop_priority"
 NICE_SETTING = "nmpc.nice"
@@ -113,6 +113,22 @@ def set_process_priority(priority: int, setting: str) -> str | None:
         reason = error.strerror if isinstance(error, OSError) else "no SCHED_FIFO here"
         return (f"{setting}: cannot run at SCHED_FIFO priority {priority} ({reason}); allow "
                 f"it (root, CAP_SYS_NICE, `ulimit -r` >= {priority}) or set {setting}: null")
+    return None
+
+
+def set_process_cpus(cpus: Iterable[int], setting: str) -> str | None:
+    """Every thread of this process on ``cpus`` only (the sim's world: its physics thread and
+    the DDS threads that carry its states); None once set, else why not (naming ``setting``).
+    Threads started later inherit it from the thread that starts them."""
+    problem = check_cpus(cpus, setting)
+    if problem is not None:
+        return problem
+    try:
+        for task in os.listdir("/proc/self/task"):
+            with contextlib.suppress(ProcessLookupError):  # a thread that ended meanwhile
+                os.sched_setaffinity(int(task), set(cpus))
+    except OSError as error:
+        return f"{setting}: cannot run on CPUs {sorted(cpus)} ({error.strerror}); set {setting}: null"
     return None
 
 

@@ -7,7 +7,7 @@ without a new state on, the robot gets the command the WBC computed on its last 
 again: the hybrid command's PD (``deploy.runtime.controller.hybrid_command``) holds the joint
 targets it integrated, and that is also the command the motors keep if the state comes late
 because the robot's side stalled (the simulated world catching up, a firmware hiccup). A stall
-longer than ``safety.stale_state_budget_s`` (40 ms) is a fault of its own (``robot state
+longer than ``safety.stale_state_budget_s`` (50 ms) is a fault of its own (``robot state
 stale``: the loop hands the supervisor each robot's stale time), and a silence longer than the
 robot's link budget (``link_timeout_s``) is a lost link as before.
 

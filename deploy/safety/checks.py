@@ -78,11 +78,12 @@ class SupervisorSettings(StrictModel):
                                     "a robot on, it gets its last fresh command again "
                                     "(deploy.runtime.stale_state)")
     stale_state_budget_s: float = Field(
-        0.04, ge=0.004, le=1.0, description="a RUNNING robot whose state has not advanced for "
+        0.05, ge=0.004, le=1.0, description="a RUNNING robot whose state has not advanced for "
                                             "longer than this [s] trips: up to it the motors "
-                                            "hold its last fresh command, past it the hold no "
-                                            "longer carries a leg (a 60 ms stall whipped a calf "
-                                            "to 36 rad/s)")
+                                            "hold its last fresh command (stalls of 40-55 ms "
+                                            "rode through), past it the hold may no longer "
+                                            "carry a leg (a 60 ms stall whipped a calf to 36 "
+                                            "rad/s once)")
     loop_overrun_budget: int = Field(
         50, ge=0, le=500, description="more control-loop ticks starting over a period late "
                                       "than this within deadline_window_s trip")

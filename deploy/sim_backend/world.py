@@ -38,6 +38,7 @@ import contextlib
 import dataclasses
 import json
 import math
+import os
 import signal
 import sys
 import threading
@@ -54,7 +55,7 @@ from deploy.config.deploy_config import DeployConfig, Go2Link
 from deploy.config.scenario import Scenario
 from deploy.runtime.gc_pauses import freeze_startup_objects
 from deploy.runtime.process_names import name_this_process
-from deploy.runtime.realtime import set_process_priority
+from deploy.runtime.realtime import set_process_cpus, set_process_priority
 from deploy.safety.checks import tilt_rad
 from deploy.safety.posture import sitting_posture
 from deploy.sim_backend.world_faults import inject_due_faults, network_faults
@@ -251,6 +252,7 @@ class SimWorld:
                 "holds": {"longest_s": self.longest_hold_s,
                           "over_4_ms": self.long_holds},
                 "mocap_frames": self.natnet.frames_published,
+                "cpus": sorted(os.sched_getaffinity(0)),
                 "faults_applied": self.faults_applied}
 
     def _track(self) -> None:
@@ -346,6 +348,10 @@ def serve(spec: WorldSpec, control: Connection, can_link: Connection) -> None:
     problem = None if priority is None else set_process_priority(priority, "sim.world_priority")
     if problem is not None:
         print(f"porter-world: {problem} (normal scheduling instead)", file=sys.stderr)
+    cpus = spec.config.sim.world_cpus
+    problem = None if cpus is None else set_process_cpus(cpus, "sim.world_cpus")
+    if problem is not None:
+        print(f"porter-world: {problem} (any CPU instead)", file=sys.stderr)
     freeze_startup_objects()  # no full collection of the scene's objects while it runs
     try:
         start_monotonic_s = time.monotonic()

@@ -72,7 +72,7 @@ def test_deploy_on_the_sim_backend_stands_walks_carries_and_sits_down(
     assert summary["watchdog"] == {"enabled": True, "tripped": False,
                                    "priority": summary["loop_priority"]}
     assert ("rates.loop_priority: cannot run the loop" in captured.err) is not allowed
-    assert summary["nmpc_nice"] == 0  # the shipped config's (normal on two cores)
+    assert summary["nmpc_nice"] == 10  # the shipped config's: yields its core to the world
     cpus = os.sched_getaffinity(0)  # the shipped CPUs where this machine has them
     assert summary["loop_cpu"] == (0 if 0 in cpus else None)
     assert summary["nmpc_cpus"] == ([1] if 1 in cpus else None)
@@ -112,6 +112,9 @@ def test_deploy_on_the_sim_backend_stands_walks_carries_and_sits_down(
     # walked and carried: the payload moved toward the goal (MoCap), nobody fell (truth)
     assert summary["payload"]["progress_toward_goal_m"] > 0.9 * np.hypot(4.2, 0.35)
     truth = summary["sim_ground_truth"]
+    # the world's process ran where sim.world_cpus put it (CPU 1; any CPU where there is none)
+    available = sorted(os.sched_getaffinity(0))
+    assert truth["cpus"] == ([1] if 1 in available else available)
     for robot in truth["robots"].values():
         assert robot["max_tilt_rad"] < 0.3
         assert robot["commands_rejected"] == 0
@@ -185,9 +188,9 @@ FAULT_AT_S = 3.0  # simulated s after the world starts: running by then (stand-u
 @pytest.mark.parametrize(("fault", "cause", "reaction_s"), [
     ({"kind": "estop_press"}, "e-stop: run not allowed (e-stop pressed", 0.05),
     ({"kind": "mocap_loss"}, "MoCap lost: no frame for", 0.1 + 0.05),
-    # the stale-state budget (40 ms) trips before the link budget (0.1 s)
-    ({"kind": "robot_silent", "robot": "go2_1"}, "robot state stale: go2_1", 0.04 + 0.05),
-    ({"kind": "robot_frozen", "robot": "go2_0"}, "'frozen tick'", 0.04 + 0.05),
+    # the stale-state budget (50 ms) trips before the link budget (0.1 s)
+    ({"kind": "robot_silent", "robot": "go2_1"}, "robot state stale: go2_1", 0.05 + 0.05),
+    ({"kind": "robot_frozen", "robot": "go2_0"}, "'frozen tick'", 0.05 + 0.05),
     # 12 repeated frames at 120 Hz make a body unseen, then the MoCap timeout
     ({"kind": "mocap_frozen"}, "MoCap lost: no frame for", 12 / 120 + 0.1 + 0.05),
 ], ids=["estop", "mocap", "link", "frozen", "mocap_frozen"])
@@ -406,6 +409,18 @@ def test_the_world_priority_stays_below_the_loops(tmp_path: Path, rates: dict, s
     fine, _ = load_deploy_config(_config(tmp_path, rates={"loop_priority": 50},
                                          sim={"world_priority": 40}))
     assert fine.sim.world_priority == 40
+
+
+@pytest.mark.parametrize(("sim", "message"), [
+    ({"world_cpus": [0]}, r"sim.world_cpus: \[0\] includes rates.loop_cpu 0"),
+    ({"world_cpus": [1, 1]}, r"sim.world_cpus.*names a CPU twice"),
+    ({"world_cpus": []}, "sim.world_cpus"),
+])
+def test_the_world_keeps_off_the_loops_core(tmp_path: Path, sim: dict, message: str) -> None:
+    with pytest.raises(ConfigError, match=message):
+        load_deploy_config(_config(tmp_path, rates={"loop_cpu": 0}, sim=sim))
+    fine, _ = load_deploy_config(_config(tmp_path, rates={"loop_cpu": 0}, sim={"world_cpus": [1]}))
+    assert fine.sim.world_cpus == [1]
 
 
 @pytest.mark.parametrize(("section", "values", "field"), [

@@ -93,6 +93,28 @@ def test_a_whole_process_goes_to_fifo_every_thread_or_says_why_not() -> None:
     assert "sim.world_priority: null" in refused.stdout
 
 
+def test_a_whole_process_goes_to_its_cpus_every_thread_or_says_why_not() -> None:
+    """The sim world's CPUs: every thread of the process (a helper thread too) on them; a CPU
+    the process may not use is refused, naming the setting and the CPUs it may use."""
+    code = textwrap.dedent("""
+        import os, threading
+        from deploy.runtime import realtime
+        cpu = max(os.sched_getaffinity(0))
+        stop = threading.Event()
+        helper = threading.Thread(target=stop.wait)
+        helper.start()
+        assert realtime.set_process_cpus([cpu], "sim.world_cpus") is None
+        tasks = [int(t) for t in os.listdir("/proc/self/task")]
+        assert len(tasks) >= 2 and all(os.sched_getaffinity(t) == {cpu} for t in tasks)
+        print(realtime.set_process_cpus([1023], "sim.world_cpus"))
+        stop.set()
+        helper.join()
+    """)
+    result = _child(code)
+    assert result.returncode == 0, result.stderr
+    assert "sim.world_cpus: CPU 1023 is not available to this process" in result.stdout
+
+
 def test_without_the_privilege_it_is_refused_naming_the_setting() -> None:
     result = _child(_UNPRIVILEGED + textwrap.dedent("""
         import os
