@@ -8,6 +8,7 @@ import sys
 from pathlib import Path
 
 from deploy.recording.fault_timeline import fault_timelines, format_timelines
+from deploy.recording.joint_speeds import calf_speed_running
 from deploy.recording.log_format import RUN_METADATA
 from deploy.recording.log_reader import LogError, LogFile, recover
 from deploy.reports.table import Column, render_table
@@ -39,6 +40,10 @@ def describe(log: LogFile) -> str:
         ["topic", Column("messages", "right"), Column("rate [Hz]", "right")],
         [[topic, str(row["messages"]), f"{row['rate_hz']:.1f}"] for topic, row in topics.items()]))
     lines.append("attachments: " + ", ".join(record["attachments"]))
+    calf = record["calf_speed_running"]
+    if calf is not None:
+        lines.append(f"fastest calf while running: p99.9 {calf['p99_9_rad_s']:.1f} rad/s, max "
+                     f"{calf['max_rad_s']:.1f} rad/s ({calf['states']} robot states)")
     summary = record["summary"]
     if summary is None:
         lines.append("summary: none (the run ended before writing one)")
@@ -66,7 +71,8 @@ def _number(value: object) -> str:
 def info_record(log: LogFile) -> dict:
     """``porter log info --json``: ``{path, size_bytes, duration_s, messages, topics:
     {topic: {messages, rate_hz}}, metadata: {name: {key: value}}, attachments: [names],
-    summary: the run's summary metrics or null}`` (JSON types only)."""
+    summary: the run's summary metrics or null, calf_speed_running: the fastest calf's speed
+    while RUNNING (``deploy.recording.joint_speeds``) or null}`` (JSON types only)."""
     counts, start_ns, end_ns = log.message_counts()
     duration_s = (end_ns - start_ns) * 1e-9
     return {"path": str(log.path), "size_bytes": log.path.stat().st_size,
@@ -74,7 +80,7 @@ def info_record(log: LogFile) -> dict:
             "topics": {topic: {"messages": n, "rate_hz": n / duration_s if duration_s > 0
                                else 0.0} for topic, n in sorted(counts.items())},
             "metadata": log.metadata(), "attachments": sorted(log.attachments()),
-            "summary": log.summary()}
+            "summary": log.summary(), "calf_speed_running": calf_speed_running(log)}
 
 
 def run_log_info(args: argparse.Namespace) -> int:
