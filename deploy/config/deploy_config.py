@@ -125,6 +125,13 @@ class RatesConfig(StrictModel):
     loop_cpu: int | None = Field(None, ge=0, le=1023)
 
 
+def _distinct_cpus(cls: type, cpus: list[int] | None) -> list[int] | None:
+    """A list of CPUs names each at most once (``nmpc.cpus``, ``sim.world_cpus``)."""
+    if cpus is not None and len(set(cpus)) != len(cpus):
+        raise ValueError(f"names a CPU twice: {cpus}")
+    return cpus
+
+
 class NmpcRunConfig(StrictModel):
     """Where the NMPC runs. ``runner``: ``process``, a process of its own (off the loop's
     interpreter lock), or ``thread``, a thread of the loop's process. ``executor``: the ADMM
@@ -146,12 +153,7 @@ class NmpcRunConfig(StrictModel):
     # Apart from rates.loop_cpu; unavailable ones as for rates.loop_cpu.
     cpus: list[Annotated[int, Field(ge=0, le=1023)]] | None = Field(None, min_length=1)
 
-    @field_validator("cpus")
-    @classmethod
-    def _distinct(cls, cpus: list[int] | None) -> list[int] | None:
-        if cpus is not None and len(set(cpus)) != len(cpus):
-            raise ValueError(f"names a CPU twice: {cpus}")
-        return cpus
+    _distinct = field_validator("cpus")(_distinct_cpus)
 
 
 class PreflightConfig(StrictModel):
@@ -184,11 +186,6 @@ class SimConfig(StrictModel):
     # Beside an NMPC at a positive nice on the same core, the world gets that core first
     # without any privilege. Unavailable ones: a warning, any CPU.
     world_cpus: list[Annotated[int, Field(ge=0, le=1023)]] | None = Field(None, min_length=1)
-
-    @field_validator("world_cpus")
-    @classmethod
-    def _distinct(cls, cpus: list[int] | None) -> list[int] | None:
-        return NmpcRunConfig._distinct(cpus)
     # ``safety`` fields replaced for this backend only (e.g. budgets this machine cannot meet)
     safety_overrides: dict[str, float | int] = {}
     # faults for tests: what the fake world leaves out
@@ -200,6 +197,8 @@ class SimConfig(StrictModel):
     # simulated seconds (what reaches the motors now comes from the watchdog alone), then
     # writes its ground truth as JSON to this file; None: the world ends with porter
     orphan_report: str | None = None
+
+    _distinct = field_validator("world_cpus")(_distinct_cpus)
 
 
 class DeployConfig(StrictModel):

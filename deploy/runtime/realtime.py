@@ -121,15 +121,11 @@ def set_process_cpus(cpus: Iterable[int], setting: str) -> str | None:
     the DDS threads that carry its states); None once set, else why not (naming ``setting``).
     Threads started later inherit it from the thread that starts them."""
     problem = check_cpus(cpus, setting)
-    if problem is not None:
-        return problem
-    try:
-        for task in os.listdir("/proc/self/task"):
-            with contextlib.suppress(ProcessLookupError):  # a thread that ended meanwhile
-                os.sched_setaffinity(int(task), set(cpus))
-    except OSError as error:
-        return f"{setting}: cannot run on CPUs {sorted(cpus)} ({error.strerror}); set {setting}: null"
-    return None
+    if problem is None:
+        for tid in _threads():
+            with contextlib.suppress(OSError):  # a thread that ended meanwhile
+                os.sched_setaffinity(tid, set(cpus))
+    return problem
 
 
 @contextlib.contextmanager
