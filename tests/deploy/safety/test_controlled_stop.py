@@ -7,15 +7,12 @@ import numpy as np
 from deploy.safety.supervisor import SafetyState as S
 from deploy.safety.supervisor import Transition
 from drivers.interfaces import JointCommand
-from tests.deploy.safety.test_supervisor import (  # noqa: F401 -- fixtures
+from tests.deploy.safety.test_supervisor import (
     _supervisor_in,
-    limits,
-    scene,
-    standing,
 )
 
 
-def test_a_controlled_stop_sits_down_with_its_cause_and_is_no_fault(limits, standing):  # noqa: F811
+def test_a_controlled_stop_sits_down_with_its_cause_and_is_no_fault(limits, standing):
     log: list[Transition] = []
     supervisor, time_s = _supervisor_in(S.RUNNING, limits, standing, log=log)
     cause = "controlled stop: braking since 3.000 s (braking: 3 infeasible NMPC plans in a row)"
