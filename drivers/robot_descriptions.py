@@ -58,8 +58,10 @@ def robot_description(robot_type: str) -> RobotDescription:
     )
 
 
+@cache
 def load_pinocchio_model(robot_type: str) -> pin.Model:
-    """Free-flyer Pinocchio model of the robot (base quaternion xyzw in q[3:7])."""
+    """Free-flyer Pinocchio model of the robot (base quaternion xyzw in q[3:7]); parsed once per
+    process and shared: read it, never change it (each user makes its own ``pin.Data``)."""
     description = robot_description(robot_type)
     return pin.buildModelFromUrdf(str(description.urdf_path), pin.JointModelFreeFlyer())
 

@@ -103,3 +103,56 @@ def test_mujoco_really_is_blocked_by_the_check() -> None:
     result = subprocess.run([sys.executable, "-c", code], cwd=ROOT, capture_output=True,
                             text=True, timeout=120)
     assert result.returncode != 0 and "import of mujoco halted" in result.stderr
+
+
+def test_package_faces_list_their_modules_and_re_export_nothing() -> None:
+    """Every ``__init__`` below the top level lists exactly its modules and subpackages in
+    ``__all__`` and imports nothing (no lazy ``__getattr__``)."""
+    wrong = []
+    for package in PACKAGES:
+        for init in sorted((ROOT / package).rglob("__init__.py")):
+            if init.parent == ROOT / package or "messages" in init.parts:
+                continue
+            tree = ast.parse(init.read_text())
+            names = [ast.literal_eval(n.value) for n in tree.body if isinstance(n, ast.Assign)
+                     and any(isinstance(t, ast.Name) and t.id == "__all__" for t in n.targets)]
+            present = {p.stem for p in init.parent.glob("*.py") if not p.name.startswith("__")
+                       and "_pb2" not in p.name}
+            present |= {d.name for d in init.parent.iterdir() if (d / "__init__.py").exists()}
+            imports = [n for n in tree.body
+                       if isinstance(n, ast.Import | ast.ImportFrom | ast.FunctionDef)]
+            if not names or set(names[0]) != present or imports:
+                wrong.append(str(init.relative_to(ROOT)))
+    assert not wrong
+
+
+_ROBOT_PATH = ("deploy.cli.porter", "deploy.cli.deploy_command", "deploy.runtime.loop",
+               "deploy.runtime.links", "deploy.safety.watchdog", "deploy.nmpc_runtime.nmpc_process")
+_CONFIGURATION = ("deploy.config.deploy_config", "deploy.config.scenario",
+                  "deploy.config.sim_faults", "deploy.config.files")
+# driver implementations (the interfaces module is the contract every layer shares)
+_DRIVER_IMPLEMENTATIONS = ("drivers.unitree", "drivers.natnet", "drivers.can", "drivers.mujoco",
+                           "drivers.robot_descriptions", "mujoco", "cyclonedds", "can")
+
+
+def _loaded_after(modules: tuple[str, ...], watched: tuple[str, ...]) -> list[str]:
+    code = (f"import importlib, sys\nfor m in {modules!r}: importlib.import_module(m)\n"
+            f"print(sorted(m for m in sys.modules if m.split('.')[0] in {watched!r} or "
+            f"any(m == w or m.startswith(w + '.') for w in {watched!r})))")
+    result = subprocess.run([sys.executable, "-c", code], cwd=ROOT, capture_output=True,
+                            text=True, timeout=120)
+    assert result.returncode == 0, result.stderr
+    return list(ast.literal_eval(result.stdout.strip()))
+
+
+def test_the_robot_path_imports_no_mujoco() -> None:
+    """``porter deploy`` on robots (its command, loop, links, watchdog, NMPC process) loads no
+    MuJoCo: the sim backend loads when ``--backend sim`` asks for it."""
+    assert _loaded_after(_ROBOT_PATH, ("mujoco", "drivers.mujoco")) == []
+    assert _loaded_after(("deploy.sim_backend.world",), ("mujoco",)) != []  # the check can fail
+
+
+def test_configuration_imports_no_driver() -> None:
+    """Loading and validating configs loads no driver, no DDS and no simulator."""
+    assert _loaded_after(_CONFIGURATION, _DRIVER_IMPLEMENTATIONS) == []
+    assert _loaded_after(("deploy.safety.watchdog",), _DRIVER_IMPLEMENTATIONS) != []

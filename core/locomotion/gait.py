@@ -44,12 +44,6 @@ class TrotGait:
     def swing_duration_s(self) -> float:
         return (1.0 - self.duty_factor) * self.period_s
 
-    def swing_progress(self, time_s: float) -> np.ndarray:
-        """(4,) fraction of the swing done at ``time_s`` for swing legs, 0 for stance legs."""
-        phase = np.mod(time_s / self.period_s + TROT_OFFSETS, 1.0)
-        progress = (phase - self.duty_factor) / (1.0 - self.duty_factor)
-        return np.where(phase < self.duty_factor, 0.0, progress)
-
     def time_to_touchdown_s(self, time_s: float) -> np.ndarray:
         """(4,) time [s] until each leg's next touchdown (0 for legs in stance)."""
         phase = np.mod(time_s / self.period_s + TROT_OFFSETS, 1.0)

@@ -7,7 +7,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from core.model.srb_model import STATE_SIZE
-from core.nmpc.cbf import OBSTACLE_PARAMETER_SIZE, PARKED_OBSTACLE
+from core.nmpc.cbf import OBSTACLE_PARAMETER_SIZE
 
 
 class InvalidMpcInputError(ValueError):
@@ -67,12 +67,6 @@ class MpcInputs:
         contacts = np.asarray(self.contacts)
         if not np.all((contacts == 0.0) | (contacts == 1.0)):
             raise InvalidMpcInputError("contacts: flags must be 0 or 1")
-
-    def obstacle_parameters(self, max_obstacles: int) -> np.ndarray:
-        """Obstacle rows padded with parked (inactive) slots to ``max_obstacles``, flattened."""
-        rows = np.asarray(self.obstacles, dtype=float).reshape(-1, OBSTACLE_PARAMETER_SIZE)
-        padding = np.tile(PARKED_OBSTACLE, (max_obstacles - rows.shape[0], 1))
-        return np.concatenate([rows, padding]).reshape(-1)
 
     def safety_values(self) -> np.ndarray:
         """h = ||p_xy - o|| - d [m] of every body (payload first, then robots) vs every obstacle,

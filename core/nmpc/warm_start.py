@@ -29,12 +29,6 @@ def shift_blocks(offsets: dict[str, tuple[int, int]], values: np.ndarray) -> np.
     return source[stage_shift_index(offsets, source.size)]
 
 
-def shift_solution(layout: BlockLayout, horizon_steps: int, solution: np.ndarray) -> np.ndarray:
-    """Previous solution moved one stage earlier, the last stage repeated."""
-    del horizon_steps  # every block's stages are in the layout
-    return shift_blocks(layout.offsets, solution)
-
-
 def shifted_multipliers(problem: TransportProblem, previous: NlpSolution
                         ) -> tuple[np.ndarray, np.ndarray]:
     """(constraint, bound) multipliers of ``previous`` moved one stage earlier with the same

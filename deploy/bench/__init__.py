@@ -1,9 +1,4 @@
-"""``porter bench``: NMPC, simulation, recorder, drivers, WBC tick and deploy benchmarks.
+"""``porter bench``: one module per bench, each with its runner and ``format_table``."""
 
-Each bench is its own module (``deploy.bench.nmpc``, ``.sim``, ``.recorder``, ``.drivers``,
-``.wbc_tick``, ``.deploy_runs``, ``.obstacle_family``; ``.rti_fidelity`` serves the NMPC bench)
-with its runner and ``format_table``; nothing is re-exported here, as the names are the same
-in each.
-"""
-
-__all__: list[str] = []
+__all__ = ["agents", "deploy_runs", "driver_peers", "drivers", "nmpc", "obstacle_family",
+           "recorder", "rti_fidelity", "sim", "wbc_tick"]

@@ -1,5 +1,5 @@
-"""The ``porter`` command line: sim, deploy, replay, log, regress, bench."""
+"""The ``porter`` command line: one module per command; the entry point is ``porter.main``."""
 
-from deploy.cli.porter import build_parser, main
-
-__all__ = ["build_parser", "main"]
+__all__ = ["agent_command", "deploy_command", "drill_command", "log_arguments",
+           "log_commands", "paper_command", "porter", "replay_command", "sim_arguments",
+           "sim_command"]

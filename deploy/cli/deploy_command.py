@@ -18,7 +18,7 @@ import threading
 import time
 from collections.abc import Callable
 from pathlib import Path
-from typing import Any, NamedTuple
+from typing import TYPE_CHECKING, Any, NamedTuple
 
 import numpy as np
 import yaml
@@ -43,10 +43,12 @@ from deploy.runtime.stop_request import StopRequest
 from deploy.safety.preflight import PreflightReport, evaluate
 from deploy.safety.supervisor import SafetyState
 from deploy.safety.watchdog import Watchdog, WatchdogSpec
-from deploy.sim_backend.backend import SimBackend
 from deploy.sim_backend.porter_faults import PorterFaults
 from drivers.interfaces import RobotMeasurement
 from drivers.link_errors import LinkMonitor
+
+if TYPE_CHECKING:  # the robot path never imports MuJoCo: the sim backend loads on use
+    from deploy.sim_backend.backend import SimBackend
 
 SWITCH_INTERVAL_S = 2e-4
 
@@ -109,6 +111,7 @@ def run_deploy(args: argparse.Namespace) -> int:
     sys.setswitchinterval(SWITCH_INTERVAL_S)
     try:
         if args.backend == "sim":
+            from deploy.sim_backend.backend import SimBackend
             backend = SimBackend(config, scenario)
             say("simulated world running (MuJoCo, fakes on loopback)")
         clock: Callable[[], float] = backend.clock if backend is not None else time.monotonic

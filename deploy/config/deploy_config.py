@@ -28,9 +28,7 @@ from deploy.config.files import ConfigError, load_settings
 from deploy.config.scenario import Scenario, load_scenario, scenario_path, shipped_scenarios
 from deploy.config.sim_faults import GO2_FAULTS, SimFault
 from deploy.recording.flight_recorder import RecorderSettings
-from deploy.safety.supervisor import SupervisorSettings
-from deploy.safety.watchdog import WatchdogSettings
-from drivers.natnet.protocol import COMMAND_PORT, DATA_PORT, MULTICAST_GROUP
+from deploy.safety.settings import SupervisorSettings, WatchdogSettings
 
 CONFIG_DIR = Path(__file__).parent / "deployments"
 
@@ -73,11 +71,12 @@ class MocapConfig(StrictModel):
 
     server_address: str = "127.0.0.1"
     local_address: str = "127.0.0.1"  # interface to bind / join the multicast group on
-    command_port: int = Field(COMMAND_PORT, ge=0, le=65535)
-    data_port: int = Field(DATA_PORT, ge=0, le=65535)  # multicast only (unicast frames come
+    # NatNet's well-known ports and group (drivers.natnet.protocol; a test holds them equal)
+    command_port: int = Field(1510, ge=0, le=65535)
+    data_port: int = Field(1511, ge=0, le=65535)  # multicast only (unicast frames come
     # back to the socket that sent CONNECT, as from Motive)
     multicast: bool = False
-    multicast_group: str = MULTICAST_GROUP
+    multicast_group: str = "239.255.42.99"
     bodies: dict[str, str] = {}
     body_ids: dict[str, int] | None = None
     obstacle_bodies: list[str | None] = []  # per scenario obstacle: a body whose position is used

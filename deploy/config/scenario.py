@@ -20,13 +20,12 @@ import numpy as np
 from pydantic import BaseModel, Field, ValidationError, field_validator, model_validator
 from pydantic_core import InitErrorDetails, PydanticCustomError
 
-from core.locomotion.gait import TrotGait
 from core.model.conventions import PAYLOAD_NAME
 from core.model.obstacles import Obstacle
 from core.model.strict_model import StrictModel
 from core.model.team_settings import AgentSettings, PayloadSettings, TeamSettings
 from core.nmpc.reference import WaypointReference
-from core.nmpc.settings import ChannelSettings, MpcSettings, SafetySettings
+from core.nmpc.settings import AdmmSettings, ChannelSettings, MpcSettings, SafetySettings
 from deploy.agents.zenoh_session import AgentNetwork
 from deploy.config.files import ConfigError, load_settings
 
@@ -112,11 +111,17 @@ class PayloadSpec(StrictModel):
         return size
 
 
+def _admm_field(name: str) -> Any:
+    """``core.nmpc.settings.AdmmSettings``'s field ``name``: its default and bounds."""
+    return AdmmSettings.model_fields[name]
+
+
 class ControllerSpec(StrictModel):
     mode: Literal["distributed", "centralized", "wrench-only"] = "distributed"
-    admm_iterations: int = Field(2, ge=1)
-    rho_state: float = Field(1e4, ge=0)
-    rho_wrench: float = Field(1e3, gt=0)
+    # ADMM: the penalties and their bounds are declared once, in core.nmpc.settings
+    admm_iterations: int = _admm_field("iterations")
+    rho_state: float = _admm_field("rho_state")
+    rho_wrench: float = _admm_field("rho_wrench")
     # ADMM local solves: worker processes of this machine (pipes), serially in this process,
     # or ``porter agent`` processes over Zenoh (``network``: where they meet).
     executor: Literal["process", "serial", "zenoh"] = "process"
@@ -167,9 +172,6 @@ class GaitSpec(StrictModel):
     period_s: float = Field(0.3, gt=0)
     duty_factor: float = Field(0.5, gt=0, lt=1)
     swing_height_m: float = Field(0.08, gt=0)
-
-    def trot_gait(self) -> TrotGait:
-        return TrotGait(period_s=self.period_s, duty_factor=self.duty_factor)
 
 
 class Scenario(StrictModel):

@@ -1,13 +1,8 @@
 """``porter drill``: a fault suite run end to end on the sim backend, one ``porter deploy`` per
-fault, judged from the outside (exit code, summary, the simulator's truth, the log)."""
+fault, judged from the outside (exit code, summary, the simulator's truth, the log).
 
-from __future__ import annotations
+No names are re-exported: import from the module that defines a name (its modules are
+listed in ``__all__``), so importing the package imports nothing else.
+"""
 
-from core.lazy_exports import lazy_exports
-
-_SOURCES = {
-    "deploy.drill.catalogue": ["DrillFault", "catalogue"],
-    "deploy.drill.runner": ["DrillRow", "format_table", "run_fault"],
-}
-__all__ = ["DrillFault", "DrillRow", "catalogue", "format_table", "run_fault"]
-__getattr__ = lazy_exports(__name__, _SOURCES)
+__all__ = ["catalogue", "runner"]

@@ -11,10 +11,12 @@ from __future__ import annotations
 
 import time
 from collections.abc import Callable
-from typing import Protocol
+from typing import TYPE_CHECKING, Protocol
 
 from deploy.runtime.timing import Pacer
-from drivers.mujoco.simulation import TeamSimulation
+
+if TYPE_CHECKING:  # the robot path never imports MuJoCo
+    from drivers.mujoco.simulation import TeamSimulation
 
 __all__ = ["LockstepClock", "LoopClock", "PacedClock"]
 

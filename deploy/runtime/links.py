@@ -15,7 +15,6 @@ answer): the failure is kept in ``problems`` for the pre-flight report.
 from __future__ import annotations
 
 import collections
-import math
 import time
 from collections.abc import Callable
 from dataclasses import dataclass, field
@@ -233,6 +232,3 @@ def _release_sport_mode(driver: Go2Driver) -> str:
         return str(error)
     return "released" if code == 0 else f"refused, code {code}"
 
-
-def finite_or_none(value: float) -> float | None:
-    return value if math.isfinite(value) else None

@@ -8,7 +8,7 @@ from typing import Protocol
 
 from deploy.config.deploy_config import PostureConfig, RatesConfig
 from deploy.runtime.controller import WbcStep
-from deploy.safety.checks import SupervisorSettings
+from deploy.safety.settings import SupervisorSettings
 
 __all__ = ["Heartbeat", "LoopHooks", "LoopSettings"]
 

@@ -53,7 +53,7 @@ from deploy.runtime.run_metrics import (
     RunMetrics,
     run_outcome,
 )
-from deploy.safety.supervisor import SupervisorSettings
+from deploy.safety.settings import SupervisorSettings
 from drivers.interfaces import RobotDriver
 from drivers.mujoco.scene import PHYSICS_TIMESTEP_S, build_team_scene
 from drivers.mujoco.sim_links import SimulatedEstop

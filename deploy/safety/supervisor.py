@@ -37,7 +37,6 @@ from deploy.safety.checks import (
     DeadlineOverrunWindow,
     RobotLimits,
     SolverFailureCounter,
-    SupervisorSettings,
     WbcFailureCounter,
     base_height_fault,
     joint_position_fault,
@@ -48,6 +47,7 @@ from deploy.safety.checks import (
     robot_limits,
     torque_fault,
 )
+from deploy.safety.settings import SupervisorSettings
 from drivers.interfaces import JointCommand, RobotMeasurement
 
 __all__ = ["RobotLimits", "SafetyError", "SafetyInputs", "SafetyState", "SafetySupervisor",

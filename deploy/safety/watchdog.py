@@ -27,9 +27,6 @@ from multiprocessing.connection import Connection
 from multiprocessing.sharedctypes import Synchronized
 from typing import TYPE_CHECKING
 
-from pydantic import Field
-
-from core.model.strict_model import StrictModel
 from deploy.runtime import realtime
 from deploy.runtime.process_names import name_this_process
 from drivers.link_errors import DriverError
@@ -40,21 +37,9 @@ from drivers.unitree.peer import UnitreeLowLevelDriver
 if TYPE_CHECKING:  # deploy.config.deploy_config holds WatchdogSettings in its DeployConfig
     from deploy.config.deploy_config import DeployConfig
 
-__all__ = ["Watchdog", "WatchdogSettings", "WatchdogSpec"]
+__all__ = ["Watchdog", "WatchdogSpec"]
 
 _WATCHING, _DISARMED, _TRIPPED = 0, 1, 2
-
-
-class WatchdogSettings(StrictModel):
-    """``watchdog:`` in deploy configs."""
-
-    enabled: bool = True
-    timeout_s: float = Field(0.025, gt=0.0, le=0.5,
-                             description="heartbeat older than this: take over [s]")
-    period_s: float = Field(0.002, gt=0.0, le=0.02,
-                            description="damping command period after taking over [s]")
-    damping_s: float = Field(5.0, gt=0.0, le=60.0,
-                             description="send damping this long, then exit [s]")
 
 
 @dataclass(frozen=True)

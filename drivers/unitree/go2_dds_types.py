@@ -282,11 +282,6 @@ def wire_from_low_state(msg: LowState_) -> WireState:
                      foot_force=np.array(msg.foot_force, dtype=np.int16), tick_ms=msg.tick)
 
 
-def low_cmd_header_ok(cmd: LowCmd_) -> bool:
-    """Whether ``cmd`` has head 0xFE 0xEF and the low-level flag 0xFF."""
-    return tuple(cmd.head) == HEAD and cmd.level_flag == LEVEL_FLAG_LOW
-
-
 def api_request(request_id: int, api_id: int, parameter: str = "{}") -> Request_:
     """A unitree_api request expecting a reply (lease 0, priority 0)."""
     return Request_(header=RequestHeader_(

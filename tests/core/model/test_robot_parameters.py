@@ -155,3 +155,8 @@ def test_unknown_robot_type_names_the_available_ones() -> None:
     for robot_type in ROBOT_TYPES:
         assert robot_type in message
     assert isinstance(error.value, ValueError)
+
+
+def test_the_pinocchio_model_is_parsed_once_per_robot_type() -> None:
+    assert load_pinocchio_model("go2") is load_pinocchio_model("go2")
+    assert load_pinocchio_model("go2") is not load_pinocchio_model("a1")

@@ -12,7 +12,7 @@ from core.nmpc.transport_problem import TransportProblem, build_transport_proble
 from core.nmpc.warm_start import (
     conform_forces,
     nominal_foot_forces,
-    shift_solution,
+    shift_blocks,
     shifted_multipliers,
 )
 from tests.core.controller_fixtures import settings, team
@@ -65,7 +65,7 @@ def test_multipliers_shift_one_stage_like_the_primal(problem: TransportProblem) 
     # the initial condition exists at stage 0 only: its multiplier stays
     np.testing.assert_array_equal(block(shifted_g, "x0_payload@0"), block(lam_g, "x0_payload@0"))
     # bound multipliers live on the decision layout: exactly the primal's shift
-    np.testing.assert_array_equal(shifted_x, shift_solution(nlp.decision, n, lam_x))
+    np.testing.assert_array_equal(shifted_x, shift_blocks(nlp.decision.offsets, lam_x))
     np.testing.assert_array_equal(nlp.decision.get(shifted_x, "grf_self@0"),
                                   nlp.decision.get(lam_x, "grf_self@1"))
 

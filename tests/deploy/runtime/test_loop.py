@@ -20,7 +20,7 @@ from deploy.runtime.codegen_cache import CompiledCodeCache
 from deploy.runtime.loop import ControlLoop, LoopSettings
 from deploy.runtime.sim_run import SimRun
 from deploy.safety.preflight import PreflightCheck, PreflightReport
-from deploy.safety.supervisor import SupervisorSettings
+from deploy.safety.settings import SupervisorSettings
 from drivers.interfaces import JointCommand, RobotDriver, RobotMeasurement
 
 

@@ -6,7 +6,7 @@ from __future__ import annotations
 
 import pytest
 
-from deploy.safety.supervisor import SupervisorSettings
+from deploy.safety.settings import SupervisorSettings
 from tests.deploy.safety.test_supervisor import (
     SETTINGS,
     TICK_S,
