@@ -38,8 +38,6 @@ class LegMeasurement(Protocol):
     @property
     def angular_velocity_in_body_rad_s(self) -> np.ndarray: ...
     @property
-    def linear_velocity_in_world_m_s(self) -> np.ndarray: ...
-    @property
     def position_rad(self) -> np.ndarray: ...
     @property
     def velocity_rad_s(self) -> np.ndarray: ...
@@ -87,13 +85,14 @@ class BaseVelocityEstimator:
             total += pin.getFrameVelocity(self.model, self.data, self.feet[i], world).linear
         return total / -len(stance)
 
-    def update(self, time_s: float, measurement: LegMeasurement) -> np.ndarray:
-        """The fused velocity at ``time_s`` [s]; ``measurement.linear_velocity_in_world_m_s``
-        is the MoCap velocity."""
+    def update(self, time_s: float, measurement: LegMeasurement,
+               mocap_velocity_m_s: np.ndarray) -> np.ndarray:
+        """The fused velocity [m/s] at ``time_s`` [s], world frame, from the legs of
+        ``measurement`` and the MoCap velocity ``mocap_velocity_m_s`` [m/s] (3,)."""
         legs = self.leg_odometry(measurement)
         if legs is not None:
             self.legs_velocity = legs
-        mocap = np.asarray(measurement.linear_velocity_in_world_m_s, dtype=float)
+        mocap = np.asarray(mocap_velocity_m_s, dtype=float)
         if self._last_time_s is None:
             self.correction = mocap - self.legs_velocity
         else:

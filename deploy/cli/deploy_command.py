@@ -171,14 +171,14 @@ def run_deploy(args: argparse.Namespace) -> int:
             runner.close()
         control.close()
     assert loop is not None and summary is not None
-    if loop.report is not None and not loop.report.ok:
-        print(loop.report.text(), file=sys.stderr)
+    if loop.sequence.report is not None and not loop.sequence.report.ok:
+        print(loop.sequence.report.text(), file=sys.stderr)
     text = json.dumps(summary, indent=2)
     print(text)
     if getattr(args, "json", None):
         Path(args.json).write_text(text + "\n")
         say(f"wrote {args.json}")
-    say(f"{loop.ended_by}; final state {loop.supervisor.state.name}")
+    say(f"{loop.sequence.ended_by}; final state {loop.supervisor.state.name}")
     if summary.get("world_holds_over_4ms"):
         holds = summary["sim_ground_truth"]["holds"]
         say(f"the simulated world held the robots' states longer than 4 ms "
@@ -252,13 +252,13 @@ def deploy_loop(config: DeployConfig, control: TeamController, links: TeamLinks,
 
 
 def exit_code(loop: ControlLoop, stop: StopRequest) -> int:
-    if loop.report is not None and not loop.report.ok:
+    if loop.sequence.report is not None and not loop.sequence.report.ok:
         return 1
     if any(t.target == SafetyState.SAFE_STOP for t in loop.supervisor.transitions):
         return 3
     if stop():
         return 130
-    if loop.ended_by == "the operator declined to arm":
+    if loop.sequence.ended_by == "the operator declined to arm":
         return 4
     return 0
 
@@ -273,16 +273,16 @@ def deploy_summary(loop: ControlLoop, args: argparse.Namespace,
     progress from the MoCap, and (``--backend sim``) simulator ground truth."""
     supervisor = loop.supervisor
     run_s = None
-    if SafetyState.RUNNING in loop.since:
+    if SafetyState.RUNNING in loop.sequence.since:
         end = next((t.time_s for t in supervisor.transitions
                     if t.source == SafetyState.RUNNING), loop.now())
-        run_s = end - loop.since[SafetyState.RUNNING]
+        run_s = end - loop.sequence.since[SafetyState.RUNNING]
     summary: dict[str, Any] = {
         "config": str(args.config), "backend": args.backend,
         "scenario": loop.control.scenario.name, "robots": loop.names,
         **loop.outcome(),
         "preflight": [{"item": c.item, "ok": c.ok, "detail": c.detail}
-                      for c in (loop.report.checks if loop.report else [])],
+                      for c in (loop.sequence.report.checks if loop.sequence.report else [])],
         "duration_s": loop.duration_s, "run_s": run_s,
         "wbc_loop": loop.wbc_stats.summary(),
         "tick_stages_wall": loop.stages.summary(),
@@ -322,7 +322,7 @@ def payload_progress(loop: ControlLoop) -> dict[str, Any]:
     """Payload positions [m] (MoCap) at the start and end of RUNNING, the goal, and how much
     closer to the goal it got."""
     goal = loop.control.reference.goal_m()
-    ends = {key: frame.poses.get(PAYLOAD_NAME) for key, frame in loop.frames.items()}
+    ends = {key: frame.poses.get(PAYLOAD_NAME) for key, frame in loop.sequence.frames.items()}
     start, end = ends.get("start"), ends.get("end")
     result: dict[str, Any] = {"goal_m": goal, "start_m": None, "end_m": None,
                               "progress_toward_goal_m": None}

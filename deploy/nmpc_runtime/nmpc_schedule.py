@@ -90,7 +90,6 @@ class NmpcSchedule:
         self.solver_failures = 0
         self.margin_flags = 0  # converged plans that start inside a safety margin
         self.relaxed_plans = 0  # plans whose soft barriers used slack
-        self.braking = ""  # why the braking backup took over (TeamController.plan_taken)
         self._submitted: dict[int, tuple[float, tuple[np.ndarray, np.ndarray] | None]] = {}
         self._compare_wrenches = False
 
@@ -201,10 +200,8 @@ class NmpcSchedule:
         self.margin_flags += int(plan.start_inside_margin)
         self.relaxed_plans += int(plan.relaxed)
         braking = self.control.plan_taken(t, plan)
-        if braking is not None:
-            self.braking = braking
-            if self.recording is not None:
-                self.recording.warning(t, braking)
+        if braking is not None and self.recording is not None:
+            self.recording.warning(t, braking)
         if self.recording is not None:
             self.recording.nmpc_update(decision.time_s, result.update, decision.inputs, plan,
                                        decision.frame, decision.payload_estimate, truth)

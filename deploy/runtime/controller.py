@@ -26,7 +26,7 @@ from core.estimation.payload_estimator import PayloadEstimator
 from core.locomotion.gait import TrotGait
 from core.locomotion.plan_tracking import LegCoordinator, wbc_target
 from core.locomotion.settings import WbcSettings
-from core.locomotion.whole_body_control import FloatingBaseState, WbcOutput, WholeBodyController
+from core.locomotion.whole_body_control import WbcOutput, WholeBodyController
 from core.model.obstacles import Obstacle
 from core.model.team import TeamModel
 from core.nmpc.admm_executor import LocalSolverSpec
@@ -44,6 +44,8 @@ from deploy.nmpc_runtime.process_executor import ProcessExecutor
 from deploy.recording.flight_recorder import FlightRecorder
 from deploy.recording.loop_recording import LoopRecording
 from deploy.runtime.codegen_cache import CompiledCodeCache
+from deploy.runtime.state_pipeline import mocap_state, wbc_state
+from deploy.safety.run_sequence import Braking
 from drivers.interfaces import JointCommand, MocapFrame, RobotMeasurement
 from drivers.robot_descriptions import (
     FOOT_RADIUS_M,
@@ -114,22 +116,6 @@ def build_team_mpc(scenario: Scenario, settings: MpcSettings, cache: CompiledCod
     return DistributedMpc(team, settings, executor=executor, compiler=cache)
 
 
-def measurement_state(measurement: RobotMeasurement) -> FloatingBaseState:
-    """The WBC's floating-base state from a robot's own sensors."""
-    return FloatingBaseState(
-        measurement.position_in_world_m, measurement.quaternion_wxyz,
-        measurement.linear_velocity_in_world_m_s, measurement.angular_velocity_in_body_rad_s,
-        measurement.position_rad, measurement.velocity_rad_s)
-
-
-def mocap_state(measurement: RobotMeasurement, frame: MocapFrame, name: str) -> FloatingBaseState:
-    """Pose from the MoCap frame, twist and joints from the robot (as on hardware)."""
-    position, quaternion = frame.poses[name]
-    return FloatingBaseState(position, quaternion, measurement.linear_velocity_in_world_m_s,
-                             measurement.angular_velocity_in_body_rad_s,
-                             measurement.position_rad, measurement.velocity_rad_s)
-
-
 def hybrid_command(output: WbcOutput, measurement: RobotMeasurement, tick_s: float,
                    kp: np.ndarray, kd: np.ndarray) -> JointCommand:
     """The hybrid joint command of a WBC tick: the QP's torque as feed-forward, and the joint
@@ -166,7 +152,7 @@ class TeamController:
         team_settings = scenario.team_settings()
         self.team = TeamModel.from_settings(team_settings, srb_parameters)
         self.reference: WaypointReference | BrakingReference = scenario.reference.to_reference()
-        self.braking_since_s: float | None = None  # when the braking backup took over
+        self.braking: Braking | None = None  # the braking backup took over (latched)
         self.reference_held_s = 0.0  # reference-clock time the governor held back
         self.reference_holding = False  # the governor holds the reference at this decision
         self.held_since_s: float | None = None  # the governor has held without a break since
@@ -224,7 +210,7 @@ class TeamController:
         self.reference_held_s, self._last_decision_s = 0.0, None
         self.reference_holding, self.held_since_s = False, None
         for robot, measurement in zip(self.robots, measurements, strict=True):
-            state = measurement_state(measurement)
+            state = wbc_state(measurement)
             robot.legs.reset(robot.wbc.srb_state(state), robot.wbc.foot_positions(state))
 
     def gait_time(self, t: float) -> float | None:
@@ -247,7 +233,7 @@ class TeamController:
         max_lag_m = self.scenario.reference.max_lag_m
         previous, self._last_decision_s = self._last_decision_s, t
         self.reference_holding = False
-        if max_lag_m is None or previous is None or self.braking_since_s is not None:
+        if max_lag_m is None or previous is None or self.braking is not None:
             self.held_since_s = None
             return
         desired = self.reference.payload_state(self.reference_time(t))
@@ -309,24 +295,29 @@ class TeamController:
         settings = self.settings.braking
         infeasible = plan.relaxed or not plan.success
         self._flagged_in_row = self._flagged_in_row + 1 if infeasible else 0
-        if not settings.enabled or self.braking_since_s is not None:
+        if not settings.enabled or self.braking is not None:
             return None
         held_since_s = self.held_since_s
         if (settings.blocked_stop_s is not None and held_since_s is not None
                 and t - held_since_s >= settings.blocked_stop_s):
-            self.begin_braking(t)
-            return (f"braking: no progress for {t - held_since_s:.1f} s (the reference held "
-                    f"since {held_since_s:.3f} s: the team is blocked); it holds and sits down")
+            return self.begin_braking(t, (
+                f"braking: no progress for {t - held_since_s:.1f} s (the reference held "
+                f"since {held_since_s:.3f} s: the team is blocked); it holds and sits down"))
         if self._flagged_in_row < settings.after_flagged_updates:
             return None
-        self.begin_braking(t)
         what = f"barrier slack {plan.barrier_slack_m:.3f} m" if plan.relaxed else "failed solve"
-        return (f"braking: {self._flagged_in_row} infeasible NMPC plans in a row (last: {what}); "
-                f"the team decelerates at {settings.deceleration_m_s2} m/s^2 and holds")
+        return self.begin_braking(t, (
+            f"braking: {self._flagged_in_row} infeasible NMPC plans in a row (last: {what}); "
+            f"the team decelerates at {settings.deceleration_m_s2} m/s^2 and holds"))
 
-    def begin_braking(self, t: float) -> None:
+    @property
+    def braking_since_s(self) -> float | None:
+        """When the braking backup took over [s, loop time] (None: it has not)."""
+        return None if self.braking is None else self.braking.since_s
+
+    def begin_braking(self, t: float, cause: str = "braking: requested") -> str:
         """From now on the payload reference brakes from the latest payload estimate along its
-        velocity, then holds (``BrakingReference``); latched."""
+        velocity, then holds (``BrakingReference``); latched. Returns ``cause``."""
         payload = self.payload_estimate
         if payload is None:
             payload = self.reference.payload_state(self.reference_time(t))
@@ -335,7 +326,8 @@ class TeamController:
             velocity_m_s=payload[3:5].copy(),
             height_m=float(self.reference.payload_state(self.reference_time(t))[2]),
             yaw_rad=float(payload[8]), deceleration_m_s2=self.settings.braking.deceleration_m_s2)
-        self.braking_since_s = t
+        self.braking = Braking(t, cause)
+        return cause
 
     def compensation_s(self, recent_delays_s: list[float]) -> float:
         """The delay the next plan is planned for (``controller.delay_compensation_s``): the
@@ -364,7 +356,7 @@ class TeamController:
             reference[3:6] = 0.0
         steps = []
         for i, (robot, measurement) in enumerate(zip(self.robots, measurements, strict=True)):
-            state = measurement_state(measurement)
+            state = wbc_state(measurement)
             srb, feet_now = robot.wbc.observe(state)
             if gait_time is None:
                 stance = np.ones(4)

@@ -28,6 +28,7 @@ from deploy.config.deploy_config import DeployConfig, Go2Link
 from drivers.can.bus import EstopMonitor, ForceTorqueSensors
 from drivers.interfaces import (
     EstopSource,
+    JointCommand,
     MocapFrame,
     MocapSource,
     RobotDriver,
@@ -129,17 +130,15 @@ class MocapTracker:
         return centred @ (positions - positions.mean(axis=0)) / denominator \
             if denominator > 0.0 else np.zeros(3)
 
-    def base_state(self, name: str) -> Callable[[], tuple[np.ndarray, np.ndarray]]:
-        """A driver's ``base_state_source`` for robot ``name``: (position [m], velocity
-        [m/s]) in world; zeros before the body was seen."""
-        def source() -> tuple[np.ndarray, np.ndarray]:
-            frame = self.frame
-            if frame is None or name not in frame.poses:
-                history = self._history[name]
-                position = history[-1][1] if history else np.zeros(3)
-                return np.array(position), np.zeros(3)
-            return np.array(frame.poses[name][0]), self.velocity(name)
-        return source
+    def body_motion(self, name: str) -> tuple[np.ndarray, np.ndarray]:
+        """Body ``name``'s (position [m], velocity [m/s]) in world, from the newest frame; the
+        last position seen and zero velocity while it is missing; zeros before it was seen."""
+        frame = self.frame
+        if frame is None or name not in frame.poses:
+            history = self._history[name]
+            position = history[-1][1] if history else np.zeros(3)
+            return np.array(position), np.zeros(3)
+        return np.array(frame.poses[name][0]), self.velocity(name)
 
 
 @dataclass
@@ -159,6 +158,19 @@ class TeamLinks:
     base_velocity: dict[str, BaseVelocityEstimator] = field(default_factory=dict)
     sport_mode: dict[str, str] = field(default_factory=dict)
     closers: list[Callable[[], None]] = field(default_factory=list)
+
+    def send(self, commands: dict[str, JointCommand]) -> str | None:
+        """Send each robot its command; the first driver error's text (None: all sent). A
+        failed send does not keep the other robots from theirs."""
+        failure = None
+        for name, command in commands.items():
+            driver = self.drivers.get(name)
+            if driver is not None:
+                try:
+                    driver.send(command)
+                except DriverError as error:
+                    failure = failure or str(error)
+        return failure
 
     def close(self) -> None:
         for close in self.closers:
@@ -190,13 +202,12 @@ def open_links(config: DeployConfig, clock: Clock = time.monotonic) -> TeamLinks
     drivers: dict[str, RobotDriver] = {}
     sport_mode: dict[str, str] = {}
     for name, link in config.robots.items():
-        source = tracker.base_state(name) if tracker is not None else None
         try:
             if isinstance(link, Go2Link):
                 go2 = Go2Driver(
                     name, link.domain_id, config.network_interface, link.topic_prefix,
                     link.link_timeout_s, link.contact_threshold_n, link.foot_force_n_per_count,
-                    base_state_source=source, clock=clock, check_state_crc=link.check_state_crc)
+                    clock=clock, check_state_crc=link.check_state_crc)
                 drivers[name] = go2
                 if link.release_sport_mode:
                     sport_mode[name] = _release_sport_mode(go2)
@@ -204,7 +215,7 @@ def open_links(config: DeployConfig, clock: Clock = time.monotonic) -> TeamLinks
                 drivers[name] = A1Driver(
                     name, link.robot_address, link.local_address, link.local_port,
                     link.link_timeout_s, link.contact_threshold_n, link.foot_force_n_per_count,
-                    base_state_source=source, clock=clock)
+                    clock=clock)
         except DriverError as error:
             problems.append(f"robot {name}: {error}")
     estop: EstopMonitor | None = None

@@ -179,13 +179,13 @@ class SimRun:
                  f"seed {self.scenario.seed}")
         self.metrics.wall_s = time.perf_counter() - start
         self.metrics.plans_applied = nmpc.plans_applied
-        self.metrics.stopped_early = loop.stopped_early
+        self.metrics.stopped_early = loop.sequence.stopped_early
         summary = self.metrics.summary()
         summary["safety"] = loop.outcome()
         summary["outcome"] = run_outcome(summary)
         summary["expected_outcome"] = self.scenario.expected_outcome
         if self.recording is not None:
-            if loop.stopped_early:
+            if loop.sequence.stopped_early:
                 self.recording.event(sim.time_s, "stop requested: run ended early", level=1)
             self.recording.event(sim.time_s, f"end: reached goal {summary['reached_goal']}, "
                                  f"falls {summary['falls']}")
@@ -226,7 +226,7 @@ class SimRun:
         yaw = yaw_from_quaternion_wxyz(quaternion)
         desired = self.control.reference.payload_state(self.control.reference_time(t))
         bodies = [position[0:2]]
-        sitting = self.loop is not None and self.loop.controlled_stop
+        sitting = self.loop is not None and self.loop.sequence.controlled_stop
         still3, still12 = self._still
         for robot in self.control.robots:
             base_position, base_quaternion = sim.base_pose(robot.name)

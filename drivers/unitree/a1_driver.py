@@ -1,8 +1,8 @@
 """Unitree A1 low-level driver over UDP (unitree_legged_sdk 3.3.x protocol): ``RobotDriver``.
 
 Frames and units as ``drivers.interfaces``; Unitree's motor and foot order are converted in
-``drivers.unitree.conventions``, once. The A1 measures no world position or linear velocity:
-``base_state_source`` supplies them (MoCap, state estimator), else zeros.
+``drivers.unitree.conventions``, once. The A1 measures no world position or linear velocity: they
+read zero (porter's estimator pipeline, ``deploy.runtime.state_pipeline``, fills them in).
 
 Network: the socket binds to ``local_address`` (127.0.0.1 by default, so nothing beyond this
 machine is reachable until an address on the robot's network, e.g. 192.168.123.162, is
@@ -36,7 +36,6 @@ from drivers.unitree.a1_udp_layout import (
     encode_low_cmd,
 )
 from drivers.unitree.conventions import (
-    BaseStateSource,
     WireCommand,
     WireState,
     state_problem,
@@ -62,7 +61,7 @@ class A1Driver(UnitreeLowLevelDriver):
                  local_address: str = LOCAL_ADDRESS, local_port: int = LOCAL_PORT,
                  link_timeout_s: float = 0.1, contact_threshold_n: float = 20.0,
                  foot_force_n_per_count: float = 1.0,
-                 base_state_source: BaseStateSource | None = None, crc: Crc = default_crc,
+                 crc: Crc = default_crc,
                  clock: Callable[[], float] = time.monotonic) -> None:
         self._name = name
         self.motor_mode = MOTOR_MODE_SERVO
@@ -71,7 +70,6 @@ class A1Driver(UnitreeLowLevelDriver):
         self.crc = crc
         self.contact_threshold_n = contact_threshold_n
         self.foot_force_n_per_count = foot_force_n_per_count
-        self.base_state_source = base_state_source
         self._socket = socket.socket(socket.AF_INET, socket.SOCK_DGRAM)
         try:
             self._socket.bind((local_address, local_port))

@@ -17,7 +17,7 @@ from __future__ import annotations
 
 import math
 import zlib
-from collections.abc import Callable, Sequence
+from collections.abc import Sequence
 from dataclasses import dataclass, field
 
 import numpy as np
@@ -44,8 +44,6 @@ MAX_JOINT_TORQUE_NM = 500.0
 MAX_BODY_RATE_RAD_S = 100.0
 QUATERNION_NORM_TOLERANCE = 0.05
 STANDARD_GRAVITY_M_S2 = 9.80665
-
-BaseStateSource = Callable[[], tuple[np.ndarray, np.ndarray]]
 
 
 def _slots(values: np.ndarray | None = None) -> np.ndarray:
@@ -109,16 +107,11 @@ def wire_state_from_measurement(measurement: RobotMeasurement, foot_force_n_per_
 
 
 def measurement_from_wire_state(state: WireState, time_s: float,
-                                base_state_source: BaseStateSource | None,
                                 foot_force_n_per_count: float,
                                 contact_threshold_n: float) -> RobotMeasurement:
     """Our measurement from a received state. Unitree robots measure no world position nor
-    linear velocity: ``base_state_source`` (MoCap, state estimator) gives (position [m], linear
-    velocity [m/s]) in world, or zeros when None. ``time_s`` is the receive time [s]."""
-    if base_state_source is None:
-        position_m, velocity_m_s = np.zeros(3), np.zeros(3)
-    else:
-        position_m, velocity_m_s = (np.array(v, dtype=float) for v in base_state_source())
+    linear velocity: both read zero. ``time_s`` is the receive time [s]."""
+    position_m, velocity_m_s = np.zeros(3), np.zeros(3)
     force_n = np.asarray(state.foot_force, dtype=float)[WIRE_FOOT_OF_FOOT] * foot_force_n_per_count
     return RobotMeasurement(
         time_s=time_s, position_rad=state.q_rad[WIRE_SLOT_OF_JOINT].astype(float),

@@ -2,7 +2,8 @@
 
 Frames and units as ``drivers.interfaces``; Unitree's motor order, foot order and sentinels
 are converted in ``drivers.unitree.conventions``, once. The Go2 measures no world position or
-linear velocity: ``base_state_source`` supplies them (MoCap, state estimator), else zeros.
+linear velocity: they read zero (porter's estimator pipeline, ``deploy.runtime.state_pipeline``,
+fills them in).
 
 Network: the DDS domain is created with an explicit CycloneDDS configuration bound to one
 network interface: loopback (``lo``) unless ``network_interface`` names another (e.g. the
@@ -47,7 +48,6 @@ from cyclonedds.util import duration
 
 from drivers.link_errors import DriverError, LinkMonitor
 from drivers.unitree.conventions import (
-    BaseStateSource,
     WireCommand,
     WireState,
     state_problem,
@@ -141,7 +141,6 @@ class Go2Driver(UnitreeLowLevelDriver):
                  network_interface: str | None = None, topic_prefix: str = "",
                  link_timeout_s: float = 0.1, contact_threshold_n: float = 20.0,
                  foot_force_n_per_count: float = 1.0,
-                 base_state_source: BaseStateSource | None = None,
                  clock: Callable[[], float] = time.monotonic,
                  check_state_crc: bool = True) -> None:
         self._name = name
@@ -151,7 +150,6 @@ class Go2Driver(UnitreeLowLevelDriver):
         self.topic_prefix = topic_prefix
         self.contact_threshold_n = contact_threshold_n
         self.foot_force_n_per_count = foot_force_n_per_count
-        self.base_state_source = base_state_source
         self.participant = open_participant(domain_id, network_interface)
         state_topic = Topic(self.participant, topic_name(topic_prefix, "lowstate"), LowState_)
         self._reader = DataReader(self.participant, state_topic, qos=STATE_QUEUE)

@@ -19,8 +19,6 @@ from drivers.unitree.conventions import (
     wire_command_from_joint_command,
 )
 
-BaseStateSource = Callable[[], tuple[np.ndarray, np.ndarray]]
-
 
 class UnitreeLowLevelDriver:
     """``RobotDriver`` over a Unitree low-level link; subclasses provide ``poll`` (take what
@@ -30,7 +28,6 @@ class UnitreeLowLevelDriver:
     motor_mode: int
     link: LinkMonitor
     last_state: WireState | None
-    base_state_source: BaseStateSource | None
     foot_force_n_per_count: float
     contact_threshold_n: float
 
@@ -68,7 +65,6 @@ class UnitreeLowLevelDriver:
         self.link.check()
         assert self.last_state is not None and self.link.last_receive_time_s is not None
         return measurement_from_wire_state(self.last_state, self.link.last_receive_time_s,
-                                           self.base_state_source,
                                            self.foot_force_n_per_count,
                                            self.contact_threshold_n)
 

@@ -51,7 +51,7 @@ def test_tracker_renames_bodies_ages_them_and_fits_a_velocity() -> None:
     assert tracker.age_s(["go2_0"]) == pytest.approx(1.0 / 120.0)
     assert tracker.age_s() is None  # the payload was never seen
     np.testing.assert_allclose(tracker.velocity("go2_0"), [0.6, 0.0, 0.0], atol=1e-9)
-    position, velocity = tracker.base_state("go2_0")()
+    position, velocity = tracker.body_motion("go2_0")
     np.testing.assert_allclose(position, [0.6 * 9 / 120, 0.0, 0.3])
     np.testing.assert_allclose(velocity, [0.6, 0.0, 0.0], atol=1e-9)
     # the same frame again is not a new sample

@@ -150,13 +150,13 @@ def test_paced_clock_runs_the_deploy_sequence_on_the_simulation() -> None:
     assert len(progress) == outcome["nmpc_updates"]
     assert all(sent == reads for reads, sent in progress), progress
     # (the tick a transition happens in still sends the old state's command)
-    running = [c for t, c in tapped.sent if loop.since[loop.supervisor.state.RUNNING] < t
-               < loop.since[loop.supervisor.state.SITTING_DOWN]]
+    running = [c for t, c in tapped.sent if loop.sequence.since[loop.supervisor.state.RUNNING] < t
+               < loop.sequence.since[loop.supervisor.state.SITTING_DOWN]]
     # the WBC's hybrid command: its torque, with the firmware PD at the WBC's small gains
     stiffness = control.robots[1].wbc.settings.joint_stiffness_nm_rad
     assert 0 < stiffness < settings.posture.kp
     assert running and all(np.all(c.kp == stiffness) and c.torque_nm.any() for c in running)
-    sitting = [c for t, c in tapped.sent if t > loop.since[loop.supervisor.state.SITTING_DOWN]]
+    sitting = [c for t, c in tapped.sent if t > loop.sequence.since[loop.supervisor.state.SITTING_DOWN]]
     assert sitting and all(c.kp.any() for c in sitting[:100])  # the posture PD
 
 
@@ -196,8 +196,8 @@ def test_armed_without_a_first_plan_for_too_long_is_a_safe_stop() -> None:
         run.close()
     outcome = loop.outcome()
     assert "no NMPC plan" in outcome["safe_stop"] and "(max 0.1 s)" in outcome["safe_stop"]
-    armed_s = loop.since[loop.supervisor.state.ARMED]
-    stopped_s = loop.since[loop.supervisor.state.SAFE_STOP]
+    armed_s = loop.sequence.since[loop.supervisor.state.ARMED]
+    stopped_s = loop.sequence.since[loop.supervisor.state.SAFE_STOP]
     assert 0.1 < stopped_s - armed_s <= 0.1 + 0.004
     assert outcome["nmpc_failed_updates"] >= 2 and loop.nmpc.plan is None
 
