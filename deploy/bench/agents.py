@@ -10,12 +10,10 @@
 from __future__ import annotations
 
 import argparse
-import json
 import multiprocessing as mp
 import threading
 import time
 from multiprocessing.connection import Connection
-from pathlib import Path
 
 import numpy as np
 
@@ -25,6 +23,7 @@ from core.nmpc.transport_problem import build_transport_problem
 from deploy.agents import wire
 from deploy.agents.zenoh_session import concrete_endpoint, open_session
 from deploy.bench.sim import bench_scenario
+from deploy.cli.conventions import Output
 from deploy.config.scenario import load_scenario
 from deploy.reports.table import Column, render_table
 from deploy.runtime.codegen_cache import CompiledCodeCache
@@ -128,15 +127,15 @@ def _figures(values: list[float], scale: float = 1e3) -> dict[str, float]:
             "p99": float(np.percentile(array, 99)), "count": len(values)}
 
 
-def run_bench(args: argparse.Namespace) -> int:
+def run_bench(args: argparse.Namespace, out: Output) -> int:
     scenario = load_scenario(args.scenario)
     settings = scenario.mpc_settings()
     sizes = wire.ProblemSizes.of(
         build_transport_problem(settings, len(scenario.team), local=True).nlp)
     request_bytes = len(wire.encode_request(_request(sizes), TEAM, 1, "bench"))
-    print(f"porter bench agents: {args.scenario}, local NLP {sizes.decision} variables, "
-          f"request {request_bytes} bytes; {args.messages} round trips; then "
-          f"{args.repeats} x {args.duration:g} s closed loop per executor, alternated")
+    out.progress(f"porter bench agents: {args.scenario}, local NLP {sizes.decision} variables, "
+                 f"request {request_bytes} bytes; {args.messages} round trips; then "
+                 f"{args.repeats} x {args.duration:g} s closed loop per executor, alternated")
     trips = {k: _figures(v) for k, v in round_trips(sizes, args.messages).items()}
     cache = CompiledCodeCache()
     updates: dict[str, list[float]] = {"process": [], "zenoh": []}
@@ -155,15 +154,13 @@ def run_bench(args: argparse.Namespace) -> int:
         median = float(np.median(updates[executor]))
         p95 = float(np.median([s["nmpc_update_ms"]["p95"] for s in loops[executor]]))
         cells.append([label, f"{median:.2f}", f"{p95:.2f}", ""])
-    print(render_table(["", *(Column(n, "right") for n in ("median ms", "p95 ms", "p99 ms"))],
-                       cells))
     gap = float(np.median(updates["zenoh"]) - np.median(updates["process"]))
-    print(f"Zenoh - pipe, ADMM update median: {gap:+.2f} ms (target within 1.5 ms); update "
-          "figures are the median over repeats of each run's median (p95 likewise)")
-    if args.json:
-        Path(args.json).write_text(json.dumps({
-            "round_trip_ms": trips, "request_bytes": request_bytes,
-            "admm_update_ms": {k: [s["nmpc_update_ms"] for s in v] for k, v in loops.items()},
-            "zenoh_minus_pipe_update_median_ms": gap}, indent=2) + "\n")
-        print(f"wrote {args.json}")
+    out.report(render_table(
+        ["", *(Column(n, "right") for n in ("median ms", "p95 ms", "p99 ms"))], cells)
+        + f"\nZenoh - pipe, ADMM update median: {gap:+.2f} ms (target within 1.5 ms); update "
+        "figures are the median over repeats of each run's median (p95 likewise)")
+    out.write_json({
+        "round_trip_ms": trips, "request_bytes": request_bytes,
+        "admm_update_ms": {k: [s["nmpc_update_ms"] for s in v] for k, v in loops.items()},
+        "zenoh_minus_pipe_update_median_ms": gap})
     return 0

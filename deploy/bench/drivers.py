@@ -23,7 +23,6 @@ sends. jitter = standard deviation. ``ratio`` = median / raw median.
 
 from __future__ import annotations
 
-import json
 import multiprocessing
 import os
 import select
@@ -31,7 +30,6 @@ import socket
 import statistics
 import time
 from collections.abc import Callable
-from pathlib import Path
 from typing import Any
 
 import can
@@ -308,8 +306,3 @@ def format_table(rows: list[dict[str, Any]]) -> str:
     return render_table(["link", "measured", *numbers], cells, [
         "ms on time.monotonic; jitter = standard deviation; raw = the same transport without "
         "porter (pre-built messages, nothing decoded); ratio = median / raw median"])
-
-
-
-def write_json(rows: list[dict[str, Any]], counters: dict[str, Any], path: Path) -> None:
-    path.write_text(json.dumps({"rows": rows, "peers": counters}, indent=2) + "\n")

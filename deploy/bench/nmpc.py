@@ -9,10 +9,8 @@ drives the SRB plant through the standard scenario (0.3 m/s past CBF-active obst
 
 from __future__ import annotations
 
-import json
 import time
 from dataclasses import dataclass
-from pathlib import Path
 
 import numpy as np
 
@@ -259,11 +257,3 @@ def format_fidelity(figures: list[RtiFidelity]) -> str:
                      f"{f.median_n:.3f} N, p95 {f.p95_n:.3f} N, max {f.max_n:.3f} N "
                      f"({f.converged_failures} left out: fatrop did not converge)")
     return "\n".join(lines)
-
-
-def write_json(rows: list[BenchRow], checks: list[AccuracyCheck], path: Path,
-               fidelity: list[RtiFidelity] | None = None) -> None:
-    path.write_text(json.dumps({"rows": [r.as_dict() for r in rows],
-                                "accuracy": [c.__dict__ for c in checks],
-                                "rti_fidelity": [f.__dict__ for f in fidelity or []]},
-                               indent=2))

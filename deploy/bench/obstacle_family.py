@@ -14,17 +14,16 @@ barriers, no braking backup, no reference governor.
 
 from __future__ import annotations
 
-import json
 import math
-from pathlib import Path
 
 from core.nmpc.settings import BrakingSettings, MpcSettings, SafetySettings
+from deploy.cli.conventions import Output, error
 from deploy.config.scenario import Scenario
 from deploy.reports.table import Column, render_table
 from deploy.runtime.codegen_cache import CompiledCodeCache
 from deploy.runtime.sim_run import SimRun
 
-__all__ = ["family", "format_table", "run_bench", "run_case", "write_json"]
+__all__ = ["family", "format_table", "run_bench", "run_case"]
 
 _COUPLING_IN_ROBOT_M = [0.0, 0.0, 0.1343]  # Go2
 _RINGS = {
@@ -128,27 +127,20 @@ def format_table(rows: list[dict]) -> str:
 
 
 
-def write_json(rows: list[dict], path: Path) -> None:
-    path.write_text(json.dumps({"rows": rows}, indent=2) + "\n")
-
-
-def run_bench(names: list[str], baseline: bool, json_path: Path | None) -> int:
+def run_bench(names: list[str], baseline: bool, out: Output) -> int:
     """``porter bench obstacles``: run the cases named (default all), print the table."""
     cases = [case for case in family() if not names or case.name in names]
     unknown = set(names) - {case.name for case in family()}
     if unknown:
-        print(f"porter bench obstacles: unknown cases {sorted(unknown)}; known: "
-              f"{[case.name for case in family()]}")
-        return 2
-    print(f"porter bench obstacles: {len(cases)} cases"
-          + (" with the baseline (hard barriers, no braking, no governor)" if baseline else ""))
+        return error(f"bench obstacles: unknown cases {sorted(unknown)}; choose from "
+                     f"{[case.name for case in family()]}")
+    out.progress(f"porter bench obstacles: {len(cases)} cases" + (
+        " with the baseline (hard barriers, no braking, no governor)" if baseline else ""))
     cache = CompiledCodeCache()
     rows = []
     for case in cases:
         rows.append(run_case(case, cache, baseline=baseline))
-        print(f"  {case.name}: {rows[-1]['outcome']}", flush=True)
-    print(format_table(rows))
-    if json_path is not None:
-        write_json(rows, json_path)
-        print(f"wrote {json_path}")
+        out.progress(f"  {case.name}: {rows[-1]['outcome']}")
+    out.report(format_table(rows))
+    out.write_json({"rows": rows})
     return 0

@@ -8,9 +8,6 @@ ticks and the rest (physics, sensor reads, gait, metrics), so the table shows wh
 
 from __future__ import annotations
 
-import json
-from pathlib import Path
-
 from core.nmpc.settings import MpcSettings
 from deploy.config.scenario import load_scenario
 from deploy.reports.table import Column, render_table
@@ -55,8 +52,3 @@ def format_table(rows: list[dict]) -> str:
     return render_table(["scenario", *numbers], cells, [
         "times in ms per robot WBC tick / per NMPC update; RTF = simulated / wall time; miss = "
         "NMPC updates over 16.7 ms; % = share of the loop's wall time"])
-
-
-
-def write_json(rows: list[dict], path: Path) -> None:
-    path.write_text(json.dumps({"rows": rows}, indent=2) + "\n")

@@ -1,10 +1,10 @@
-"""``porter agent`` (one robot's ADMM local solves over Zenoh, see ``deploy.agents``) and
-``porter bench agents``."""
+"""``porter agent``: one robot's ADMM local solves over Zenoh (see ``deploy.agents``)."""
 
 from __future__ import annotations
 
 import argparse
-import sys
+
+from deploy.cli.conventions import Output, error
 
 
 def add_agent_parser(commands: argparse._SubParsersAction) -> None:
@@ -32,6 +32,8 @@ def add_agent_parser(commands: argparse._SubParsersAction) -> None:
     agent.add_argument("--peer-timeout", type=float, default=1.0, metavar="S",
                        help="coordinator-free topology: a peer silent this long fails the "
                             "update (default 1 s)")
+    agent.add_argument("--quiet", action="store_true",
+                       help="print nothing but errors (no start and end lines)")
     agent.add_argument("--parent-pid", type=int, help=argparse.SUPPRESS)
     agent.set_defaults(handler=run_agent)
 
@@ -51,40 +53,20 @@ def run_agent(args: argparse.Namespace) -> int:
         team = args.team or scenario.name
     else:
         if args.agents is None or args.agents < 1:
-            print("porter: agent --settings needs --agents N (N >= 1)", file=sys.stderr)
-            return 2
+            return error("agent --settings needs --agents N (N >= 1): the team size the "
+                         "settings were written for")
         settings, agent_count = load_settings(args.settings, MpcSettings), args.agents
         team = args.team or "porter"
     if not 0 <= args.index < agent_count:
-        print(f"porter: agent --index must be in [0, {agent_count - 1}], got {args.index}",
-              file=sys.stderr)
-        return 2
+        return error(f"agent --index must be in [0, {agent_count - 1}], got {args.index}")
     spec = LocalSolverSpec(settings, agent_count, CompiledCodeCache())
     agent = AdmmAgent(spec, AgentAddress(team, args.index, args.key_prefix, args.connect,
                                          args.listen), parent_pid=args.parent_pid,
                       peer_timeout_s=args.peer_timeout)
-    print(f"porter agent {args.index} of team {team!r}: problem {agent.digest}, serving on "
-          f"{args.key_prefix}", file=sys.stderr, flush=True)
+    out = Output(args)
+    out.progress(f"porter agent {args.index} of team {team!r}: problem {agent.digest}, "
+                 f"serving on {args.key_prefix}")
     agent.serve()
-    print(f"porter agent {args.index}: {agent.solved} requests answered, "
-          f"{agent.superseded} superseded by a newer one, dropped {dict(agent.rejected)}",
-          file=sys.stderr)
+    out.progress(f"porter agent {args.index}: {agent.solved} requests answered, "
+                 f"{agent.superseded} superseded by a newer one, dropped {dict(agent.rejected)}")
     return 0
-
-
-def add_bench_agents_parser(bench_kinds: argparse._SubParsersAction) -> None:
-    agents = bench_kinds.add_parser("agents", help="ADMM messages over Zenoh vs the pipe "
-                                    "executor: round trips and closed-loop updates")
-    agents.add_argument("scenario", nargs="?", default="two_go2")
-    agents.add_argument("--messages", type=int, default=500, help="round trips per transport")
-    agents.add_argument("--duration", type=float, default=3.0,
-                        help="closed-loop seconds per run")
-    agents.add_argument("--repeats", type=int, default=2, help="runs per executor")
-    agents.add_argument("--json", help="also write the figures as JSON")
-    agents.set_defaults(handler=_bench_agents)
-
-
-def _bench_agents(args: argparse.Namespace) -> int:
-    from deploy.bench.agents import run_bench
-
-    return run_bench(args)

@@ -24,6 +24,7 @@ import numpy as np
 import yaml
 
 from core.model.conventions import PAYLOAD_NAME
+from deploy.cli.conventions import DIFFERS, OK, SAFE_STOP, STOPPED, Output
 from deploy.config.deploy_config import DeployConfig, load_deploy_config
 from deploy.config.files import ConfigError
 from deploy.nmpc_runtime.nmpc_process import NmpcProcess
@@ -85,7 +86,8 @@ def run_deploy(args: argparse.Namespace) -> int:
     duration_s = args.duration if args.duration is not None else scenario.duration_s
     if not duration_s > 0:
         raise ConfigError(f"--duration: must be positive, got {duration_s}")
-    say = lambda text: print(f"porter deploy: {text}", file=sys.stderr, flush=True)  # noqa: E731
+    out = Output(args)
+    say = lambda text: out.progress(f"porter deploy: {text}")  # noqa: E731
     say(f"{config_name(args.config)}: scenario {scenario.name!r}, robots "
         f"{', '.join(config.robots)}, backend {args.backend}, run {duration_s:g} s")
     # probed before any process or thread exists (they would inherit the policy)
@@ -172,12 +174,9 @@ def run_deploy(args: argparse.Namespace) -> int:
         control.close()
     assert loop is not None and summary is not None
     if loop.sequence.report is not None and not loop.sequence.report.ok:
-        print(loop.sequence.report.text(), file=sys.stderr)
-    text = json.dumps(summary, indent=2)
-    print(text)
-    if getattr(args, "json", None):
-        Path(args.json).write_text(text + "\n")
-        say(f"wrote {args.json}")
+        print(loop.sequence.report.text(), file=sys.stderr)  # what to fix: even with --quiet
+    out.report(json.dumps(summary, indent=2))
+    out.write_json(summary)
     say(f"{loop.sequence.ended_by}; final state {loop.supervisor.state.name}")
     if summary.get("world_holds_over_4ms"):
         holds = summary["sim_ground_truth"]["holds"]
@@ -252,15 +251,15 @@ def deploy_loop(config: DeployConfig, control: TeamController, links: TeamLinks,
 
 
 def exit_code(loop: ControlLoop, stop: StopRequest) -> int:
+    """``deploy.cli.conventions``: a failed pre-flight differs, a safe stop is itself, a stop
+    request or a declined arming is the operator's."""
     if loop.sequence.report is not None and not loop.sequence.report.ok:
-        return 1
+        return DIFFERS
     if any(t.target == SafetyState.SAFE_STOP for t in loop.supervisor.transitions):
-        return 3
-    if stop():
-        return 130
-    if loop.sequence.ended_by == "the operator declined to arm":
-        return 4
-    return 0
+        return SAFE_STOP
+    if stop() or loop.sequence.ended_by == "the operator declined to arm":
+        return STOPPED
+    return OK
 
 
 def config_name(path: str) -> str:

@@ -6,6 +6,8 @@ from __future__ import annotations
 import argparse
 from collections.abc import Callable
 
+from deploy.cli.conventions import add_output_options
+
 Handler = Callable[[argparse.Namespace], int]
 
 
@@ -29,17 +31,26 @@ def _log_timeline(args: argparse.Namespace) -> int:
 
 def add_log_parsers(commands: argparse._SubParsersAction, regress_handler: Handler,
                     count: Callable[[str], int]) -> None:
-    log = commands.add_parser("log", help="inspect and repair flight logs")
-    log_kinds = log.add_subparsers(dest="log_command", required=True)
-    info = log_kinds.add_parser("info", help="duration, topics, counts, summary metrics")
+    log = commands.add_parser("log", help="inspect and repair flight logs",
+                              description="Read a flight log: what it holds, what was late "
+                              "before a safe stop; make a killed run's log readable.")
+    log_kinds = log.add_subparsers(dest="log_command", required=True, metavar="KIND")
+    info = log_kinds.add_parser(
+        "info", help="duration, topics, counts, summary metrics",
+        description="What LOG holds: its duration, topics with counts and rates, metadata, "
+        "attachments, the fastest calf while running and the run's summary metrics. Exit 2 "
+        "when LOG cannot be read.")
     info.add_argument("log", help="LOG.mcap")
-    info.add_argument("--json", action="store_true", help="print it as one JSON document "
-                      "(path, size_bytes, duration_s, messages, topics, metadata, attachments, "
-                      "summary)")
+    add_output_options(info, "the record (path, size_bytes, duration_s, messages, topics, "
+                             "metadata, attachments, summary, calf_speed_running)")
     info.set_defaults(handler=_log_info)
-    recover = log_kinds.add_parser("recover", help="make a killed run's log readable")
+    recover = log_kinds.add_parser(
+        "recover", help="make a killed run's log readable",
+        description="Copy every complete record of a log that was never closed (a killed "
+        "run) into a new, indexed file. Exit 2 when LOG cannot be read.")
     recover.add_argument("log", help="LOG.mcap left by a run that did not close it")
     recover.add_argument("-o", "--output", help="recovered file (default LOG.recovered.mcap)")
+    add_output_options(recover, "what was copied")
     recover.set_defaults(handler=_log_recover)
     timeline = log_kinds.add_parser(
         "timeline", help="what was late before each safe stop",
@@ -52,7 +63,7 @@ def add_log_parsers(commands: argparse._SubParsersAction, regress_handler: Handl
                           help="the window before each safe stop (the only view so far)")
     timeline.add_argument("--window-ms", type=float, default=50.0,
                           help="how far before each stop to look [ms] (default 50)")
-    timeline.add_argument("--json", help="also write the timelines as JSON to this path")
+    add_output_options(timeline, "the timelines")
     timeline.set_defaults(handler=_log_timeline)
 
     regress = commands.add_parser(
@@ -65,7 +76,7 @@ def add_log_parsers(commands: argparse._SubParsersAction, regress_handler: Handl
                          help="MpcSettings overriding the log's attached ones (what-if)")
     regress.add_argument("--max-decisions", type=count,
                          help="replay only the first N decisions of each log")
-    regress.add_argument("--json", help="also write the per-log report as JSON")
+    add_output_options(regress, "the per-log report")
     regress.add_argument("--wbc-settings", help="YAML WbcSettings replacing the logged ones "
                          "in the re-simulation (a changed WBC)")
     regress.add_argument("--no-resimulate", action="store_true",

@@ -3,10 +3,9 @@
 from __future__ import annotations
 
 import argparse
-import json
-import sys
 from pathlib import Path
 
+from deploy.cli.conventions import OK, Output, error, os_error
 from deploy.recording.fault_timeline import fault_timelines, format_timelines
 from deploy.recording.joint_speeds import calf_speed_running
 from deploy.recording.log_format import RUN_METADATA
@@ -84,47 +83,49 @@ def info_record(log: LogFile) -> dict:
 
 
 def run_log_info(args: argparse.Namespace) -> int:
+    out = Output(args)
     try:
         log = LogFile(args.log)
-        if getattr(args, "json", False):
-            print(json.dumps(info_record(log), indent=2, default=str))
-        else:
-            print(describe(log))
-    except LogError as error:
-        print(f"porter: {error}", file=sys.stderr)
-        return 2
-    return 0
+        out.report(describe(log))
+        out.write_json(info_record(log))
+    except LogError as failure:
+        return error(f"{failure}; give the path of a flight log porter wrote")
+    return OK
 
 
 def run_log_recover(args: argparse.Namespace) -> int:
+    out = Output(args)
     source = Path(args.log)
     output = Path(args.output) if args.output else source.with_suffix(".recovered.mcap")
     if output.resolve() == source.resolve():
-        print("porter: the recovered file must not overwrite the original", file=sys.stderr)
-        return 2
+        return error("the recovered file must not overwrite the original; name another with "
+                     "--output")
     try:
         result = recover(source, output)
-    except (LogError, OSError) as error:
-        print(f"porter: {error}", file=sys.stderr)
-        return 2
+    except LogError as failure:
+        return error(f"{failure}; give the path of the log the run left")
+    except OSError as failure:
+        return error(os_error(failure, "give the path of the log the run left and a writable "
+                                       "--output"))
     ending = (f"the stream ended inside a record ({result.error}); the unfinished chunk is lost"
               if result.chunks_lost else "the file was complete")
-    print(f"porter log recover: {result.messages} messages copied to {output}; {ending}")
-    return 0
+    out.report(f"porter log recover: {result.messages} messages copied to {output}; {ending}")
+    out.write_json({"output": str(output), "messages": result.messages,
+                    "chunks_lost": result.chunks_lost, "error": result.error})
+    return OK
 
 
 def run_log_timeline(args: argparse.Namespace) -> int:
+    out = Output(args)
     window_ms = args.window_ms
     if not (window_ms > 0 and window_ms <= 10_000):  # NaN fails too
-        print(f"porter: --window-ms must be in (0, 10000] ms, got {window_ms}", file=sys.stderr)
-        return 2
+        return error(f"--window-ms must be in (0, 10000] ms, got {window_ms}")
     try:
         timelines = fault_timelines(LogFile(args.log), 1e-3 * window_ms)
-    except (LogError, OSError) as error:
-        print(f"porter: {error}", file=sys.stderr)
-        return 2
-    print(format_timelines(timelines))
-    if args.json:
-        Path(args.json).write_text(json.dumps([t.to_json() for t in timelines], indent=2) + "\n")
-        print(f"wrote {args.json}", file=sys.stderr)
-    return 0
+    except LogError as failure:
+        return error(f"{failure}; give the path of a flight log porter wrote")
+    except OSError as failure:
+        return error(os_error(failure, "give the path of a flight log porter wrote"))
+    out.report(format_timelines(timelines))
+    out.write_json([t.to_json() for t in timelines])
+    return OK

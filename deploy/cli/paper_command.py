@@ -3,7 +3,8 @@
 from __future__ import annotations
 
 import argparse
-import sys
+
+from deploy.cli.conventions import Output, add_output_options, error
 
 PAPER_CLAIMS = ("table1", "delay", "iterations", "consensus", "experiments")
 
@@ -13,9 +14,13 @@ def add_paper_parser(commands: argparse._SubParsersAction) -> None:
         "paper", help="reproduce one of the paper's ablations beside its figures",
         description="Run the variants of one of the paper's claims on the MuJoCo backend and "
                     "print porter's figures beside the paper's; writes CLAIM.json and "
-                    "CLAIM.png (the ablation figure's panels) into --out.")
-    paper.add_argument("claim", choices=PAPER_CLAIMS)
-    paper.add_argument("--scenario", default="two_go2")
+                    "CLAIM.png (the ablation figure's panels) into --out. Exit 0 when every "
+                    "run was safe and reached its scenario's expected outcome, 1 when one "
+                    "did not.")
+    paper.add_argument("claim", choices=PAPER_CLAIMS, help="which claim: "
+                       + ", ".join(PAPER_CLAIMS))
+    paper.add_argument("--scenario", default="two_go2",
+                       help="shipped scenario the ablations run on (default two_go2)")
     paper.add_argument("--duration", type=float, help="seconds per run (default: the "
                        "scenario's)")
     paper.add_argument("--out", default="paper", help="folder for the JSON and PNG")
@@ -23,6 +28,7 @@ def add_paper_parser(commands: argparse._SubParsersAction) -> None:
                        help="team sizes (table1)")
     paper.add_argument("--scenarios", nargs="+", help="experiments: these scenarios only "
                        "(default: all five)")
+    add_output_options(paper, "the claim's document (as CLAIM.json)")
     paper.set_defaults(handler=_paper)
 
 
@@ -33,22 +39,18 @@ def _paper(args: argparse.Namespace) -> int:
     from deploy.paper.reproduce import reproduce
     from deploy.paper.table1 import reproduce_table1
 
+    output = Output(args)
     if args.duration is not None and not args.duration > 0:
-        print(f"porter: paper --duration must be positive, got {args.duration}",
-              file=sys.stderr)
-        return 2
+        return error(f"paper --duration must be positive, got {args.duration}")
     if args.claim == "table1":
         if not all(2 <= n <= 8 for n in args.agents):
-            print(f"porter: paper --agents must be in [2, 8], got {args.agents}",
-                  file=sys.stderr)
-            return 2
-        return reproduce_table1(args.agents, args.duration or 3.0, Path(args.out))
+            return error(f"paper --agents must be in [2, 8], got {args.agents}")
+        return reproduce_table1(args.agents, args.duration or 3.0, Path(args.out), output)
     if args.claim == "experiments":
         unknown = sorted(set(args.scenarios or []) - set(EXPERIMENTS))
         if unknown:
-            print(f"porter: paper experiments: unknown scenarios {unknown}; choose from "
-                  f"{sorted(EXPERIMENTS)}", file=sys.stderr)
-            return 2
+            return error(f"paper experiments: unknown scenarios {unknown}; choose from "
+                         f"{sorted(EXPERIMENTS)}")
         return reproduce_experiments(args.scenarios or list(EXPERIMENTS), args.duration,
-                                     Path(args.out))
-    return reproduce(args.claim, args.scenario, args.duration, Path(args.out))
+                                     Path(args.out), output)
+    return reproduce(args.claim, args.scenario, args.duration, Path(args.out), output)

@@ -9,13 +9,13 @@ from __future__ import annotations
 
 import argparse
 import json
-import sys
 import time
 from pathlib import Path
 
 import rerun as rr
 import yaml
 
+from deploy.cli.conventions import OK, Output, error
 from deploy.recording.log_format import RUN_METADATA, SCENARIO_ATTACHMENT
 from deploy.recording.log_reader import LogError, LogFile
 from deploy.viewing import layout as paths
@@ -69,11 +69,11 @@ def run_document(log: LogFile) -> str:
 
 def run_replay(args: argparse.Namespace) -> int:
     started = time.perf_counter()
+    out = Output(args)
     target = replay_target(args)
     if target not in ("spawn", "connect") and not target.endswith(".rrd") and "://" not in target:
-        print(f"porter: --connect {target!r}: expected a URL such as "
-              "rerun+http://127.0.0.1:9876/proxy", file=sys.stderr)
-        return 2
+        return error(f"--connect {target!r}: expected a URL such as "
+                     "rerun+http://127.0.0.1:9876/proxy")
     messages, last_ns = 0, 0
     try:
         log = LogFile(args.log)
@@ -91,10 +91,13 @@ def run_replay(args: argparse.Namespace) -> int:
             last_ns = item.log_time_ns
         recording.flush()
         recording.disconnect()
-    except LogError as error:  # not MCAP, incomplete, corrupted, another format version
-        print(f"porter: {error}", file=sys.stderr)
-        return 2
+    except LogError as failure:  # not MCAP, incomplete, corrupted, another format version
+        return error(f"{failure}; give the path of a flight log porter wrote (porter log "
+                     "recover makes a killed run's log readable)")
     output = {"spawn": "a spawned viewer", "connect": "the local viewer"}.get(target, target)
-    print(f"porter replay: {messages} messages, {last_ns * 1e-9:.2f} s of log -> {output} "
-          f"({time.perf_counter() - started:.1f} s)")
-    return 0
+    wall_s = time.perf_counter() - started
+    out.report(f"porter replay: {messages} messages, {last_ns * 1e-9:.2f} s of log -> {output} "
+               f"({wall_s:.1f} s)")
+    out.write_json({"log": args.log, "target": target, "messages": messages,
+                    "duration_s": last_ns * 1e-9, "wall_s": wall_s})
+    return OK

@@ -6,6 +6,8 @@ from __future__ import annotations
 import argparse
 from collections.abc import Callable
 
+from deploy.cli.conventions import add_output_options
+
 
 def add_sim_parser(commands: argparse._SubParsersAction,
                    handler: Callable[[argparse.Namespace], int],
@@ -13,10 +15,11 @@ def add_sim_parser(commands: argparse._SubParsersAction,
     sim = commands.add_parser(
         "sim", help="run a scenario on the embedded MuJoCo backend",
         description="Run a scenario in closed loop on MuJoCo, in lockstep: the NMPC plans, the "
-        "WBC turns plans into torques, every message goes to a flight log. Prints the summary.")
+        "WBC turns plans into torques, every message goes to a flight log. Prints the summary. "
+        "Exit 0 when the team reached the scenario's expected outcome without a fall, 1 when "
+        "not, 130 when stopped.")
     sim.add_argument("scenario", nargs="?", default="two_go2",
                      help="shipped name or YAML path (default two_go2)")
-    sim.add_argument("--json", metavar="FILE", help="also write the summary as JSON")
     sim.add_argument("--config", metavar="YAML", help="MpcSettings fields to override")
     sim.add_argument("--duration", type=positive_number, metavar="S",
                      help="instead of the scenario's duration_s")
@@ -28,7 +31,7 @@ def add_sim_parser(commands: argparse._SubParsersAction,
     sim.add_argument("--serial", action="store_true", help="the same as --executor serial")
     sim.add_argument("--delay", action="store_true", help="apply each plan after its solve")
     add_delay_arguments(sim)
-    sim.add_argument("--quiet", action="store_true", help="no progress bar")
+    add_output_options(sim, "the summary")
     sim.add_argument("--record", metavar="LOG.mcap",
                      help="flight log (default runs/<scenario>-<time>.mcap)")
     sim.add_argument("--no-record", action="store_true", help="write no flight log")

@@ -13,6 +13,7 @@ from rich.console import Console
 from rich.progress import BarColumn, Progress, TextColumn, TimeElapsedColumn
 
 from core.nmpc.settings import ChannelSettings, MpcSettings
+from deploy.cli.conventions import DIFFERS, OK, STOPPED, Output
 from deploy.cli.sim_arguments import delay_settings
 from deploy.config.files import ConfigError
 from deploy.config.scenario import Scenario, load_scenario
@@ -60,9 +61,10 @@ def scenario_from_args(args: argparse.Namespace) -> Scenario:
 
 def run_sim(args: argparse.Namespace, base_settings: MpcSettings) -> int:
     scenario = scenario_from_args(args)
-    print(f"porter sim: scenario {scenario.name!r}, {len(scenario.team)} robots, "
-          f"{scenario.controller.mode} NMPC, {scenario.duration_s:g} s on MuJoCo "
-          "(the first start compiles the NLPs, about a minute each)", file=sys.stderr)
+    out = Output(args)
+    out.progress(f"porter sim: scenario {scenario.name!r}, {len(scenario.team)} robots, "
+                 f"{scenario.controller.mode} NMPC, {scenario.duration_s:g} s on MuJoCo "
+                 "(the first start compiles the NLPs, about a minute each)")
     loop = SimRun(scenario, CompiledCodeCache(), base_settings)
     recorder: FlightRecorder | None = None
     if not args.no_record:
@@ -74,8 +76,8 @@ def run_sim(args: argparse.Namespace, base_settings: MpcSettings) -> int:
                                      settings, sinks=live_view_sinks(args, scenario),
                                      blas_kernels=loop.control.cache.blas_kernels().target)
         loop.attach_recorder(recorder)
-        print(f"porter sim: recording to {path}", file=sys.stderr)
-    show = not args.quiet
+        out.progress(f"porter sim: recording to {path}")
+    show = not out.quiet
     # A live bar only on a terminal: piped or logged stderr gets the transitions, no redraws.
     bar = Progress(TextColumn("porter sim"), BarColumn(),
                    TextColumn("{task.completed:5.1f}/{task.total:.1f} s simulated"),
@@ -99,30 +101,35 @@ def run_sim(args: argparse.Namespace, base_settings: MpcSettings) -> int:
                 print(f"porter sim: the recorder dropped {recorder.dropped} messages",
                       file=sys.stderr)
     assert summary is not None
-    text = json.dumps(summary, indent=2)
-    print(text)
-    if args.json:
-        Path(args.json).write_text(text + "\n")
-        print(f"wrote {args.json}", file=sys.stderr)
+    out.report(json.dumps(summary, indent=2))
+    out.write_json(summary)
+    verdict, as_expected = sim_verdict(summary, args.duration)
+    out.progress(f"porter sim: {verdict}")
+    if stop():
+        out.progress(f"porter sim: stopped by {stop.reason} at {summary['duration_s']:.2f} s")
+        return STOPPED
+    return OK if as_expected else DIFFERS
+
+
+def sim_verdict(summary: dict, duration_s: float | None) -> tuple[str, bool]:
+    """One line on the run, and whether it is as its scenario expects: its expected outcome
+    and no fall (a run shortened by ``--duration``, ``duration_s``, may time out)."""
     verdict = ("reached the goal" if summary["reached_goal"] else "did NOT reach the goal")
     if summary["safety"].get("controlled_stop"):
         verdict += (f" (controlled stop: braking since {summary['safety']['braking_since_s']:.2f} s,"
                     " then the team sat down; the cause is in the transitions)")
     expected = summary.get("expected_outcome", "goal")
     verdict += f"; outcome {summary['outcome']!r}"
-    if summary["outcome"] == expected:
+    as_expected = summary["outcome"] == expected
+    if as_expected:
         verdict += " as the scenario expects"
-    elif args.duration is not None and summary["outcome"] == "time out":
-        verdict += f" (--duration {args.duration:g} s: the scenario's own length expects {expected!r})"
+    elif duration_s is not None and summary["outcome"] == "time out":
+        as_expected = True  # a shortened run is not expected to arrive
+        verdict += f" (--duration {duration_s:g} s: the scenario's own length expects {expected!r})"
     else:
         verdict += f", the scenario expects {expected!r}"
-    print(f"porter sim: {verdict}; falls {summary['falls']}; min h {summary['min_h_m']}",
-          file=sys.stderr)
-    if stop():
-        print(f"porter sim: stopped by {stop.reason} at {summary['duration_s']:.2f} s",
-              file=sys.stderr)
-        return 130
-    return 0
+    return (f"{verdict}; falls {summary['falls']}; min h {summary['min_h_m']}",
+            as_expected and not summary["falls"])
 
 
 def live_view_sinks(args: argparse.Namespace, scenario: Scenario) -> list:

@@ -334,6 +334,11 @@ def load_deploy_config(path_or_name: Path | str) -> tuple[DeployConfig, Scenario
     """The config and its scenario, cross-checked (robots = the scenario's team, one MoCap
     obstacle entry at most per obstacle). Raises ``ConfigError`` naming the field."""
     path = config_path(path_or_name)
+    if not path.exists():
+        shipped = sorted(p.stem for p in CONFIG_DIR.glob("*.yaml"))
+        raise ConfigError(f"no deploy config {str(path_or_name)!r} ({path} does not exist); "
+                          f"shipped configs: {', '.join(shipped)} (or give the path of a "
+                          "YAML file)")
     config = load_settings(path, DeployConfig)
     reference = Path(config.scenario)
     relative = path.parent / reference

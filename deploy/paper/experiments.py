@@ -11,6 +11,7 @@ from pathlib import Path
 import numpy as np
 
 from core.nmpc.settings import MpcSettings
+from deploy.cli.conventions import DIFFERS, OK, Output
 from deploy.config.scenario import load_scenario
 from deploy.reports.table import Column, render_table
 from deploy.runtime.codegen_cache import CompiledCodeCache
@@ -44,7 +45,11 @@ def run_experiment(name: str, duration_s: float | None, cache: CompiledCodeCache
                   "end_m": o.row(summary["duration_s"], 0.0)[0:2].tolist(),
                   "radius_m": o.radius_m, "safe_radius_m": o.radius_m + safety}
                  for o in run.obstacles]
+    shortened = duration_s is not None and duration_s < load_scenario(name).duration_s
+    as_expected = summary["falls"] == 0 and (summary["outcome"] == summary["expected_outcome"]
+                                             or (shortened and summary["outcome"] == "time out"))
     return {"scenario": name, "paper": EXPERIMENTS[name], "falls": summary["falls"],
+            "outcome": summary["outcome"], "as_expected": as_expected,
             "reached_goal": summary["reached_goal"], "min_h_m": summary["min_h_m"],
             "rms_payload_position_error_m": summary["rms_payload_position_error_m"],
             "duration_s": summary["duration_s"], "robots": [r.name for r in run.control.robots],
@@ -98,13 +103,17 @@ def format_experiments(rows: list[dict]) -> str:
 
 
 
-def reproduce_experiments(names: list[str], duration_s: float | None, out: Path) -> int:
+def reproduce_experiments(names: list[str], duration_s: float | None, out: Path,
+                          output: Output) -> int:
+    """Exit ``OK`` when every experiment ran without a fall to its scenario's expected
+    outcome (a shortened run need not arrive), else ``DIFFERS``."""
     cache = CompiledCodeCache()
     rows = [run_experiment(name, duration_s, cache) for name in names]
-    print(format_experiments(rows))
+    output.report(format_experiments(rows))
     out.mkdir(parents=True, exist_ok=True)
     plot_experiments(rows, out / "experiments.png")
-    (out / "experiments.json").write_text(json.dumps({"claim": "experiments", "rows": rows})
-                                          + "\n")
-    print(f"wrote {out / 'experiments.json'} and {out / 'experiments.png'}")
-    return 0
+    document = {"claim": "experiments", "rows": rows}
+    (out / "experiments.json").write_text(json.dumps(document) + "\n")
+    output.progress(f"wrote {out / 'experiments.json'} and {out / 'experiments.png'}")
+    output.write_json(document)
+    return OK if all(row["as_expected"] for row in rows) else DIFFERS

@@ -10,6 +10,7 @@ from pathlib import Path
 import numpy as np
 
 from core.nmpc.settings import MpcSettings
+from deploy.cli.conventions import DIFFERS, OK, Output
 from deploy.config.scenario import Scenario, load_scenario
 from deploy.paper.claims import CLAIMS, Claim, Variant
 from deploy.recording.expectations import flatten_summary
@@ -104,17 +105,22 @@ def plot(claim: Claim, rows: list[dict], path: Path) -> None:
 
 
 def reproduce(name: str, scenario: str, duration_s: float | None, out: Path,
-              executor: str = "serial") -> int:
+              output: Output, executor: str = "serial") -> int:
+    """Exit ``OK`` when every variant ran safely to the goal (the paper's claim is of safe
+    runs), else ``DIFFERS``."""
     claim = CLAIMS[name]
     rows = run_claim(claim, scenario, duration_s, executor)
-    print(format_rows(claim, rows))
+    output.report(format_rows(claim, rows))
     out.mkdir(parents=True, exist_ok=True)
     plot(claim, rows, out / f"{name}.png")
     table = [{k: v for k, v in row.items() if k != "series"} for row in rows]
-    (out / f"{name}.json").write_text(json.dumps({
-        "claim": name, "statement": claim.statement, "scenario": scenario, "rows": table,
-        "series": {row["variant"]: row["series"] for row in rows}},
-        indent=2, default=lambda v: None if isinstance(v, float) and math.isnan(v) else v)
-        + "\n")
-    print(f"wrote {out / (name + '.json')} and {out / (name + '.png')}")
-    return 0
+    document = {"claim": name, "statement": claim.statement, "scenario": scenario,
+                "rows": table, "series": {row["variant"]: row["series"] for row in rows}}
+    (out / f"{name}.json").write_text(json.dumps(
+        document, indent=2,
+        default=lambda v: None if isinstance(v, float) and math.isnan(v) else v) + "\n")
+    output.progress(f"wrote {out / (name + '.json')} and {out / (name + '.png')}")
+    output.write_json(document)
+    shortened = duration_s is not None and duration_s < load_scenario(scenario).duration_s
+    safe = all(row["falls"] == 0 and (row["reached_goal"] or shortened) for row in rows)
+    return OK if safe else DIFFERS

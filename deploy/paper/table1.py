@@ -9,6 +9,7 @@ from pathlib import Path
 from typing import Any
 
 from deploy.bench.nmpc import BenchRow, run_bench
+from deploy.cli.conventions import OK, Output
 from deploy.reports.table import Column, render_table
 
 # Table I of the paper: decision variables (dist., cent.), IPOPT iterations, distributed and
@@ -75,15 +76,16 @@ def format_table1(rows: list[dict]) -> str:
 
 
 
-def reproduce_table1(agent_counts: list[int], duration_s: float, out: Path) -> int:
+def reproduce_table1(agent_counts: list[int], duration_s: float, out: Path, output: Output
+                     ) -> int:
     rows, _, _ = run_bench(agent_counts, ["rti"], duration_s, parallel=True,
                            include_reference=True,
                            reference_modes=("centralized", "distributed"), with_checks=False)
     table = table1_rows(rows)
-    print(format_table1(table))
+    output.report(format_table1(table))
     out.mkdir(parents=True, exist_ok=True)
-    (out / "table1.json").write_text(json.dumps({"claim": "table1", "rows": table,
-                                                 "bench_rows": [r.as_dict() for r in rows]},
-                                                indent=2) + "\n")
-    print(f"wrote {out / 'table1.json'}")
-    return 0
+    document = {"claim": "table1", "rows": table, "bench_rows": [r.as_dict() for r in rows]}
+    (out / "table1.json").write_text(json.dumps(document, indent=2) + "\n")
+    output.progress(f"wrote {out / 'table1.json'}")
+    output.write_json(document)
+    return OK

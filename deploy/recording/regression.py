@@ -17,12 +17,9 @@ stored next to it (``LOG.expect.json``). Exit code 1 when anything is outside it
 
 from __future__ import annotations
 
-import argparse
-import json
 import math
 import platform
-import sys
-from dataclasses import asdict, dataclass, field
+from dataclasses import dataclass, field
 from pathlib import Path
 
 import numpy as np
@@ -36,15 +33,13 @@ from core.nmpc.mpc_plan import MpcPlan
 from core.nmpc.nlp_solver import NlpSolution, SolveStats
 from core.nmpc.settings import MpcSettings
 from core.nmpc.warm_start import ControllerMemory
-from deploy.config.files import ConfigError, load_settings
 from deploy.recording import log_format as fmt
 from deploy.recording.expectations import (
     check_expectations,
-    draft_expectations,
     expectation_margins,
     expectations_path,
 )
-from deploy.recording.log_reader import LogError, LogFile
+from deploy.recording.log_reader import LogFile
 from deploy.recording.messages import porter_log_pb2 as pb
 from deploy.recording.resimulation import logged_run
 from deploy.recording.resimulation import resimulate as resimulate_run
@@ -253,46 +248,3 @@ def format_report(report: LogRegression) -> str:
         lines.append(f"  expectations on {checked}; tightest margins (1 = band centre, 0 = "
                      "edge): " + ", ".join(f"{k} {m:.2f}" for k, m in tightest))
     return "\n".join(lines)
-
-
-def refresh_expectations(paths: list[str]) -> int:
-    for path in paths:
-        try:
-            summary = LogFile(path).summary()
-        except LogError as error:
-            print(f"porter: {error}", file=sys.stderr)
-            return 2
-        if summary is None:
-            print(f"porter: {path}: no summary metrics to draft expectations from",
-                  file=sys.stderr)
-            return 2
-        target = expectations_path(Path(path))
-        target.write_text(json.dumps(draft_expectations(summary), indent=2) + "\n")
-        print(f"wrote {target}: review the bands, then commit it")
-    return 0
-
-
-def run_regress(args: argparse.Namespace) -> int:
-    if args.refresh_expectations:
-        return refresh_expectations(args.logs)
-    settings = load_settings(args.settings, MpcSettings) if args.settings else None
-    wbc = load_settings(args.wbc_settings, WbcSettings) if args.wbc_settings else None
-    cache: CompiledCodeCache | None = None  # one per process: kernels load once
-    reports = []
-    for path in args.logs:
-        try:
-            cache = cache or CompiledCodeCache(blas_target=replay_blas_target(
-                recorded_kernels(LogFile(path))))
-            report = regress_log(path, cache, settings, args.max_decisions,
-                                 not args.no_resimulate, wbc)
-        except (LogError, ConfigError) as error:
-            print(f"porter: {error}", file=sys.stderr)
-            return 2
-        print(format_report(report))
-        reports.append(report)
-    if args.json:
-        Path(args.json).write_text(json.dumps(
-            [asdict(r) | {"passed": r.passed} for r in reports], indent=2) + "\n")
-    failed = [r for r in reports if not r.passed]
-    print(f"porter regress: {len(reports) - len(failed)} of {len(reports)} logs pass")
-    return 1 if failed else 0

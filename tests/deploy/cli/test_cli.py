@@ -132,8 +132,8 @@ def test_bench_sim_overlapped_reports_its_delay(tmp_path: Path,
     code = main(["bench", "sim", "two_go2", "--duration", "0.3", "--delay-s", "0.012",
                  "--overlap", "--json", str(out)])
     assert code == 0
-    printed = capsys.readouterr().out
-    assert "computation_delay_s 0.012, overlap_computation True" in printed
-    assert "two_go2" in printed and "RTF" in printed
+    shown = capsys.readouterr()
+    assert "computation_delay_s 0.012, overlap_computation True" in shown.err  # progress
+    assert "two_go2" in shown.out and "RTF" in shown.out  # the table
     (row,) = json.loads(out.read_text())["rows"]
     assert row["executor"] == "serial"

@@ -25,7 +25,7 @@ def test_version(capsys: pytest.CaptureFixture[str]) -> None:
 
 
 def test_log_info_json_is_one_document_of_the_log(capsys: pytest.CaptureFixture[str]) -> None:
-    assert main(["log", "info", str(LOG), "--json"]) == 0
+    assert main(["log", "info", str(LOG), "--json", "-"]) == 0
     record = json.loads(capsys.readouterr().out)
     assert record["path"] == str(LOG) and record["messages"] > 1000
     assert record["topics"]["/nmpc/update"]["messages"] == 90
@@ -38,7 +38,7 @@ def test_a_closed_pipe_ends_porter_quietly() -> None:
     os.close(read_end)  # the reader is gone before porter writes, as `| head` after its lines
     try:
         done = subprocess.run([sys.executable, "-m", "deploy.cli", "log", "info", str(LOG),
-                               "--json"], cwd=ROOT, stdout=write_end, stderr=subprocess.PIPE,
+                               "--json", "-"], cwd=ROOT, stdout=write_end, stderr=subprocess.PIPE,
                               text=True, timeout=120, check=False)
     finally:
         os.close(write_end)

@@ -142,7 +142,7 @@ def test_overlapping_the_nmpc_process_gives_the_same_run(tmp_path: Path) -> None
     for record in (["--no-record"], ["--overlap", "--record", str(log)]):
         done = subprocess.run(
             [sys.executable, "-m", "deploy.cli", "sim", "two_go2", "--duration", "1.0",
-             "--serial", "--delay-s", "0.012", *record, "--quiet"],
+             "--serial", "--delay-s", "0.012", *record, "--json", "-"],
             cwd=ROOT, capture_output=True, text=True, timeout=600, check=False)
         assert done.returncode == 0, done.stderr
         summaries.append(json.loads(done.stdout))
@@ -164,7 +164,7 @@ def test_the_process_executor_gives_the_serial_run() -> None:
     for executor in (["--serial"], []):
         done = subprocess.run(
             [sys.executable, "-m", "deploy.cli", "sim", "two_go2", "--duration", "1.0",
-             "--no-record", "--quiet", *executor],
+             "--no-record", "--json", "-", *executor],
             cwd=ROOT, capture_output=True, text=True, timeout=600, check=False)
         assert done.returncode == 0, done.stderr
         summaries.append(json.loads(done.stdout))
