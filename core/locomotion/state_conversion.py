@@ -15,6 +15,7 @@ import numpy as np
 
 from core.locomotion.buffered_function import BufferedFunction, ParameterVector
 from core.model.conventions import JOINT_COUNT
+from core.model.rotations import euler_angles, quaternion_rotation_rows
 
 if TYPE_CHECKING:  # a protocol only; the NMPC package need not load
     from core.locomotion.whole_body_control import FloatingBaseState
@@ -74,22 +75,18 @@ class StateConversion:
 def _conversion_expressions(p: dict[str, ca.SX], com_offset_in_base_m: np.ndarray
                             ) -> list[ca.SX]:
     quaternion = p["quaternion_wxyz"]
-    # as core.model.rotations.rotation_from_quaternion_wxyz: normalized first
+    # core.model.rotations' formula, normalized first as rotation_from_quaternion_wxyz
     w, x, y, z = ca.vertsplit(quaternion / ca.norm_2(quaternion))
-    rotation = ca.vertcat(
-        ca.horzcat(1 - 2 * (y * y + z * z), 2 * (x * y - w * z), 2 * (x * z + w * y)),
-        ca.horzcat(2 * (x * y + w * z), 1 - 2 * (x * x + z * z), 2 * (y * z - w * x)),
-        ca.horzcat(2 * (x * z - w * y), 2 * (y * z + w * x), 1 - 2 * (x * x + y * y)))
+    rotation = ca.vertcat(*(ca.horzcat(*row) for row in quaternion_rotation_rows(w, x, y, z)))
     raw = quaternion  # Pinocchio's q carries the measured quaternion, xyzw
     q = ca.vertcat(p["position"], raw[1], raw[2], raw[3], raw[0], p["joint_position"])
     v = ca.vertcat(rotation.T @ p["linear_velocity"], p["angular_velocity_in_body"],
                    p["joint_velocity"])
     offset = rotation @ ca.DM(com_offset_in_base_m)
     omega = rotation @ p["angular_velocity_in_body"]
-    # as euler_from_rotation: R = Rz(yaw) Ry(pitch) Rx(roll), pitch in [-pi/2, pi/2]
-    euler = ca.vertcat(ca.atan2(rotation[2, 1], rotation[2, 2]),
-                       -ca.asin(ca.fmin(ca.fmax(rotation[2, 0], -1.0), 1.0)),
-                       ca.atan2(rotation[1, 0], rotation[0, 0]))
+    # core.model.rotations' formula: R = Rz(yaw) Ry(pitch) Rx(roll), pitch in [-pi/2, pi/2]
+    euler = ca.vertcat(*euler_angles(lambda i, j: rotation[i, j], ca.atan2, ca.asin,
+                                     lambda value: ca.fmin(ca.fmax(value, -1.0), 1.0)))
     srb = ca.vertcat(p["position"] + offset, p["linear_velocity"] + ca.cross(omega, offset),
                      euler, omega)
     return [q, v, rotation.T, srb]

@@ -1,32 +1,57 @@
-"""NumPy rotations in the controller's convention (the CasADi twins live in core.model.srb_model).
+"""Rotations in the controller's convention, each formula written once.
 
-Theta = (roll, pitch, yaw) with R = Rz(yaw) Ry(pitch) Rx(roll), body -> world.
+Theta = (roll, pitch, yaw) with R = Rz(yaw) Ry(pitch) Rx(roll), body -> world; quaternions
+(w, x, y, z). The ``*_rows`` / ``euler_angles`` formulas are plain arithmetic over their
+arguments, so the same code builds the NumPy values here and the CasADi expressions of the
+NMPC (``core.model.srb_model``) and of the WBC's state conversion
+(``core.locomotion.state_conversion``): one implementation, two backends, the same operations.
 """
 
 from __future__ import annotations
 
+from collections.abc import Callable
+from typing import Any
+
 import numpy as np
+
+__all__ = ["cross3", "cross_rows", "euler_angles", "euler_from_rotation",
+           "euler_rotation_rows", "quaternion_rotation_rows", "rotation_from_euler",
+           "rotation_from_quaternion_wxyz", "yaw_from_quaternion_wxyz", "yaw_rotation"]
+
+
+def euler_rotation_rows(cr: Any, sr: Any, cp: Any, sp: Any, cy: Any, sy: Any) -> tuple:
+    """The rows of R = Rz(yaw) Ry(pitch) Rx(roll) from the cosines and sines of roll, pitch
+    and yaw (floats or CasADi symbols)."""
+    return ((cy * cp, cy * sp * sr - sy * cr, cy * sp * cr + sy * sr),
+            (sy * cp, sy * sp * sr + cy * cr, sy * sp * cr - cy * sr),
+            (-sp, cp * sr, cp * cr))
+
+
+def quaternion_rotation_rows(w: Any, x: Any, y: Any, z: Any) -> tuple:
+    """The rows of the rotation of the unit quaternion (w, x, y, z) (floats or CasADi)."""
+    return ((1 - 2 * (y * y + z * z), 2 * (x * y - w * z), 2 * (x * z + w * y)),
+            (2 * (x * y + w * z), 1 - 2 * (x * x + z * z), 2 * (y * z - w * x)),
+            (2 * (x * z - w * y), 2 * (y * z + w * x), 1 - 2 * (x * x + y * y)))
+
+
+def euler_angles(entry: Callable[[int, int], Any], atan2: Callable[[Any, Any], Any],
+                 asin: Callable[[Any], Any], clip: Callable[[Any], Any]) -> tuple:
+    """(roll, pitch, yaw) of R = Rz(yaw) Ry(pitch) Rx(roll), pitch in [-pi/2, pi/2], from R's
+    entries ``entry(i, j)`` and the backend's atan2, asin and clip to [-1, 1]."""
+    return (atan2(entry(2, 1), entry(2, 2)), -asin(clip(entry(2, 0))),
+            atan2(entry(1, 0), entry(0, 0)))
 
 
 def rotation_from_euler(euler: np.ndarray) -> np.ndarray:
-    """R = Rz(yaw) Ry(pitch) Rx(roll) for Theta = (roll, pitch, yaw) (NumPy; as srb_model)."""
-    cr, sr = np.cos(euler[0]), np.sin(euler[0])
-    cp, sp = np.cos(euler[1]), np.sin(euler[1])
-    cy, sy = np.cos(euler[2]), np.sin(euler[2])
-    return np.array([
-        [cy * cp, cy * sp * sr - sy * cr, cy * sp * cr + sy * sr],
-        [sy * cp, sy * sp * sr + cy * cr, sy * sp * cr - cy * sr],
-        [-sp, cp * sr, cp * cr],
-    ])
+    """R = Rz(yaw) Ry(pitch) Rx(roll) for Theta = (roll, pitch, yaw)."""
+    return np.array(euler_rotation_rows(np.cos(euler[0]), np.sin(euler[0]), np.cos(euler[1]),
+                                        np.sin(euler[1]), np.cos(euler[2]), np.sin(euler[2])))
 
 
 def euler_from_rotation(rotation: np.ndarray) -> np.ndarray:
     """(roll, pitch, yaw) of R = Rz(yaw) Ry(pitch) Rx(roll), pitch in [-pi/2, pi/2]."""
-    return np.array([
-        np.arctan2(rotation[2, 1], rotation[2, 2]),
-        -np.arcsin(np.clip(rotation[2, 0], -1.0, 1.0)),
-        np.arctan2(rotation[1, 0], rotation[0, 0]),
-    ])
+    return np.array(euler_angles(lambda i, j: rotation[i, j], np.arctan2, np.arcsin,
+                                 lambda value: np.clip(value, -1.0, 1.0)))
 
 
 def yaw_rotation(yaw_rad: float) -> np.ndarray:
@@ -37,11 +62,7 @@ def yaw_rotation(yaw_rad: float) -> np.ndarray:
 def rotation_from_quaternion_wxyz(quaternion: np.ndarray) -> np.ndarray:
     """Rotation matrix of a (w, x, y, z) quaternion (normalised first)."""
     w, x, y, z = np.asarray(quaternion, dtype=float) / np.linalg.norm(quaternion)
-    return np.array([
-        [1 - 2 * (y * y + z * z), 2 * (x * y - w * z), 2 * (x * z + w * y)],
-        [2 * (x * y + w * z), 1 - 2 * (x * x + z * z), 2 * (y * z - w * x)],
-        [2 * (x * z - w * y), 2 * (y * z + w * x), 1 - 2 * (x * x + y * y)],
-    ])
+    return np.array(quaternion_rotation_rows(w, x, y, z))
 
 
 def yaw_from_quaternion_wxyz(quaternion: np.ndarray) -> float:

@@ -23,6 +23,7 @@ import casadi as ca
 import numpy as np
 
 from core.model.conventions import FOOT_COUNT
+from core.model.rotations import euler_rotation_rows
 
 # A CasADi SX/DM expression or a float: the model functions accept constants (the plant's fixed
 # masses) as well as symbols. Typed as Any because CasADi's stubs reject mixed SX/DM/float
@@ -67,14 +68,9 @@ def split_state(x: Expr) -> tuple[ca.SX, ca.SX, ca.SX, ca.SX]:
 
 def rotation_body_to_world(euler: Expr) -> Expr:
     """R = Rz(yaw) Ry(pitch) Rx(roll) for Theta = (roll, pitch, yaw)."""
-    cr, sr = ca.cos(euler[0]), ca.sin(euler[0])
-    cp, sp = ca.cos(euler[1]), ca.sin(euler[1])
-    cy, sy = ca.cos(euler[2]), ca.sin(euler[2])
-    return ca.vertcat(
-        ca.horzcat(cy * cp, cy * sp * sr - sy * cr, cy * sp * cr + sy * sr),
-        ca.horzcat(sy * cp, sy * sp * sr + cy * cr, sy * sp * cr - cy * sr),
-        ca.horzcat(-sp, cp * sr, cp * cr),
-    )
+    rows = euler_rotation_rows(ca.cos(euler[0]), ca.sin(euler[0]), ca.cos(euler[1]),
+                               ca.sin(euler[1]), ca.cos(euler[2]), ca.sin(euler[2]))
+    return ca.vertcat(*(ca.horzcat(*row) for row in rows))
 
 
 def euler_rates_from_angular_velocity(euler: Expr, omega_in_world: Expr) -> Expr:

@@ -10,12 +10,19 @@ Per MPC update, warm-started from the shifted previous step, for r = 0 .. iterat
 Residuals per iteration: primal r^i = s^i - s_bar (payload-state and wrench parts separately)
 and dual ||P (s_bar_{r+1} - s_bar_r)||. The wrench-only ablation is the same algorithm with
 ``coupling.enabled = False`` and a small or zero ``admm.rho_state``.
+
+Two topologies, one controller protocol (``core.nmpc.team_mpc.TeamMpc``): ``DistributedMpc``
+coordinates the iterations here (its executor solves each round's local NLPs), and
+``core.nmpc.admm_peer_mpc.PeerDistributedMpc`` hands the whole update to agents that run the
+iterations among themselves. ``AdmmMpc`` holds what both share: the update's preparation, the
+warm start and the plan.
 """
 
 from __future__ import annotations
 
 import time
-from dataclasses import replace
+from dataclasses import dataclass
+from typing import Protocol
 
 import numpy as np
 
@@ -38,35 +45,46 @@ from core.nmpc.settings import MpcSettings
 from core.nmpc.transport_problem import build_transport_problem
 from core.nmpc.warm_start import ControllerMemory, initial_guess, shifted_multipliers
 
+__all__ = ["AdmmMpc", "AdmmStart", "DistributedMpc", "PeerExecutor"]
 
-class DistributedMpc:
-    """Receding-horizon ADMM distributed NMPC; ``update`` is one MPC step."""
 
-    def __init__(
-        self,
-        team: TeamModel,
-        settings: MpcSettings,
-        executor: LocalSolveExecutor | None = None,
-        compiler: NlpCompiler | None = None,
-    ) -> None:
+class PeerExecutor(Protocol):
+    """Agents that run an update's ADMM iterations among themselves (``run_admm``)."""
+
+    def run_admm(self, requests: list[LocalSolveRequest], consensus: np.ndarray,
+                 duals: np.ndarray, iterations: int) -> list[AgentAdmm]: ...
+
+    def close(self) -> None: ...
+
+
+@dataclass
+class AdmmStart:
+    """What one update's iterations start from: each agent's initial guess, bounds, obstacle
+    selection, parameters (consensus target zero) and warm multipliers, and s-bar and the
+    duals shifted from the previous update."""
+
+    guesses: list[np.ndarray]
+    bounds: list[tuple[np.ndarray, np.ndarray]]
+    selections: list
+    parameters: list[np.ndarray]
+    multipliers: list[tuple[np.ndarray, np.ndarray] | None]
+    consensus: np.ndarray
+    duals: np.ndarray
+
+
+class AdmmMpc:
+    """Receding-horizon ADMM distributed NMPC; ``update`` is one MPC step, its iterations
+    ``_iterate``'s (one topology per subclass)."""
+
+    def __init__(self, team: TeamModel, settings: MpcSettings) -> None:
         self.team = team
         self.settings = settings
         self.problem = build_transport_problem(settings, team.agent_count, local=True)
         self.weights = self.problem.consensus_weights()
         self._updates = 0  # MPC updates so far (numbers the local-solve requests)
-        channel = settings.admm.channel
-        self.channel = (None if channel.perfect
-                        else LossyChannel(channel, team.agent_count, self._shift_shared))
         self._payload_size = settings.horizon_steps * STATE_SIZE
-        # agents that run the ADMM among themselves (coordinator-free): this process only
-        # hands them the update's data and keeps the consensus and duals between updates
-        self.peer_topology = bool(getattr(executor, "runs_admm", False))
-        if self.peer_topology and self.channel is not None:
-            raise ValueError("admm.channel (the emulated lossy channel) applies at the "
-                             "coordinator; the coordinator-free topology has none")
-        self.executor = executor or SerialExecutor(
-            LocalSolverSpec(settings, team.agent_count, compiler)
-        )
+        self.channel: LossyChannel | None = None
+        self.executor: LocalSolveExecutor | PeerExecutor | None = None
         self.reset()
 
     def reset(self) -> None:
@@ -77,7 +95,9 @@ class DistributedMpc:
             self.channel.reset()
 
     def close(self) -> None:
-        self.executor.close()
+        """Stop the executor's workers or agents (if any)."""
+        if self.executor is not None:
+            self.executor.close()
 
     def memory(self) -> ControllerMemory:
         """The warm start the next ``update`` will use (references, not copies)."""
@@ -96,8 +116,31 @@ class DistributedMpc:
 
     def update(self, inputs: MpcInputs, iterations: int | None = None) -> MpcPlan:
         start = time.perf_counter()
-        na = self.team.agent_count
         iterations = iterations or self.settings.admm.iterations
+        begin = self._start(inputs)
+        self._updates += 1
+        solutions, records, consensus, duals, warnings = self._iterate(begin, iterations)
+        self._previous = list(solutions)
+        self._consensus, self._duals = consensus, duals
+        plan = self._plan(inputs, solutions, consensus)
+        plan.warnings.extend(warnings)
+        plan.admm_iterations = records
+        plan.solves = [stats for record in records for stats in record.solves]
+        plan.success = all(stats.success for stats in plan.solves)
+        plan.flag_unsafe_start(inputs.safety_values())
+        plan.flag_relaxed_barriers(self.settings.safety.slack_tolerance_m)
+        plan.flag_dropped_obstacles(begin.selections)
+        plan.update_time_s = time.perf_counter() - start
+        return plan
+
+    def _iterate(self, begin: AdmmStart, iterations: int
+                 ) -> tuple[list[NlpSolution], list[AdmmIteration], np.ndarray, np.ndarray,
+                            list[str]]:
+        """The update's ``iterations``: solutions, iteration records, s-bar, duals, warnings."""
+        raise NotImplementedError
+
+    def _start(self, inputs: MpcInputs) -> AdmmStart:
+        na = self.team.agent_count
         self.problem.validate(inputs)  # once: the problem's own checks below are skipped
         guesses = [initial_guess(self.problem, self.team, inputs, self._previous[i], agent=i)
                    for i in range(na)]
@@ -111,7 +154,6 @@ class DistributedMpc:
                                                     consensus_target=zero_target,
                                                     selection=selections[i], validated=True)
                       for i in range(na)]
-        target_slice = self.problem.nlp.parameters.slice("consensus_target")
         if self._consensus is None:
             consensus = np.mean([self.problem.shared_trajectory(g) for g in guesses], axis=0)
             duals = np.zeros_like(self._duals)
@@ -122,66 +164,7 @@ class DistributedMpc:
         # iteration r + 1 from iteration r's (same instant: only the consensus target moved).
         multipliers = [None if previous is None else shifted_multipliers(self.problem, previous)
                        for previous in self._previous]
-        solutions: list[NlpSolution] = []
-        records: list[AdmmIteration] = []
-        self._updates += 1
-        if self.peer_topology:
-            requests = []
-            for i, warm in enumerate(multipliers):
-                requests.append(LocalSolveRequest(
-                    agent=i, initial_guess=guesses[i], parameters=parameters[i],
-                    lower_bounds=bounds[i][0], upper_bounds=bounds[i][1],
-                    constraint_multipliers=None if warm is None else warm[0],
-                    bound_multipliers=None if warm is None else warm[1],
-                    warm_start=warm is not None, update=self._updates))
-            runs = self.executor.run_admm(  # type: ignore[attr-defined]
-                requests, consensus, duals, iterations)
-            solutions, records, consensus, duals, warnings = self._from_agents(
-                runs, consensus, duals, iterations)
-        for iteration in range(0 if self.peer_topology else iterations):
-            requests = []
-            for i in range(na):
-                warm = ((solutions[i].constraint_multipliers, solutions[i].bound_multipliers)
-                        if solutions else multipliers[i])
-                agent_parameters = parameters[i].copy()
-                agent_parameters[target_slice] = consensus - duals[i]
-                requests.append(LocalSolveRequest(
-                    agent=i,
-                    initial_guess=solutions[i].decision if solutions else guesses[i],
-                    parameters=agent_parameters,
-                    lower_bounds=bounds[i][0],
-                    upper_bounds=bounds[i][1],
-                    constraint_multipliers=None if warm is None else warm[0],
-                    bound_multipliers=None if warm is None else warm[1],
-                    warm_start=warm is not None,
-                    update=self._updates,
-                    iteration=iteration,
-                ))
-            results = self.executor.solve_all(requests)
-            solutions = [fallback_solution(result, request.initial_guess)
-                         for result, request in zip(results, requests, strict=True)]
-            shared = np.array([self.problem.shared_trajectory(s.decision) for s in solutions])
-            # Through the network (ChannelSettings): the coordinator's consensus and duals see
-            # what arrived (held last); the residuals recorded are the agents' true gaps.
-            received, fresh = ((shared, np.ones(na, dtype=bool)) if self.channel is None
-                               else self.channel.exchange(shared, self._updates))
-            new_consensus, duals = consensus_step(received, duals, consensus, fresh)
-            records.append(self._residuals(shared - new_consensus, new_consensus - consensus,
-                                           [result.stats for result in results]))
-            consensus = new_consensus
-        self._previous = list(solutions)
-        self._consensus, self._duals = consensus, duals
-        plan = self._plan(inputs, solutions, consensus)
-        if self.peer_topology:
-            plan.warnings.extend(warnings)
-        plan.admm_iterations = records
-        plan.solves = [stats for record in records for stats in record.solves]
-        plan.success = all(stats.success for stats in plan.solves)
-        plan.flag_unsafe_start(inputs.safety_values())
-        plan.flag_relaxed_barriers(self.settings.safety.slack_tolerance_m)
-        plan.flag_dropped_obstacles(selections)
-        plan.update_time_s = time.perf_counter() - start
-        return plan
+        return AdmmStart(guesses, bounds, selections, parameters, multipliers, consensus, duals)
 
     def _plan(self, inputs: MpcInputs, solutions: list[NlpSolution], consensus: np.ndarray
               ) -> MpcPlan:
@@ -204,36 +187,6 @@ class DistributedMpc:
         ])
         plan.consensus_trajectory = consensus
         return plan
-
-    def _from_agents(self, runs: list[AgentAdmm], consensus: np.ndarray, duals: np.ndarray,
-                     iterations: int) -> tuple[list[NlpSolution], list[AdmmIteration],
-                                               np.ndarray, np.ndarray, list[str]]:
-        """Solutions, iteration records, s-bar and duals from agents that ran the ADMM
-        without a coordinator. They must agree on s-bar (same inputs, same arithmetic): a
-        disagreement is a warning. One agent that stopped early fails the whole update."""
-        solutions = [run.solution for run in runs]
-        if any(run.failure for run in runs):
-            # an agent that finished still followed an s-bar its stopped peer never shared in:
-            # its solve counts as failed too
-            stats = [replace(run.solution.stats, success=False,
-                             status=run.solution.stats.status if run.failure
-                             else "a peer stopped the update") for run in runs]
-            solutions = [replace(s, stats=st) for s, st in zip(solutions, stats, strict=True)]
-            shared = np.array([self.problem.shared_trajectory(s.decision) for s in solutions])
-            record = self._residuals(shared - consensus, np.zeros_like(consensus), stats)
-            return solutions, [record], consensus, duals, []
-        records, previous = [], consensus
-        for r in range(iterations):
-            shared = np.array([run.shared[r] for run in runs])
-            records.append(self._residuals(shared - runs[0].consensus[r],
-                                           runs[0].consensus[r] - previous,
-                                           [run.stats[r] for run in runs]))
-            previous = runs[0].consensus[r]
-        gap = max(float(np.max(np.abs(run.consensus[-1] - previous))) for run in runs)
-        warnings = ([f"ADMM agents disagree on the consensus by {gap:.3g}"] if gap > 0.0
-                    else [])
-        assert runs[0].duals is not None
-        return solutions, records, previous, runs[0].duals, warnings
 
     def _residuals(self, primal: np.ndarray, consensus_change: np.ndarray,
                    stats: list[SolveStats]) -> AdmmIteration:
@@ -258,6 +211,63 @@ class DistributedMpc:
         payload = np.vstack([payload[1:], payload[-1:]])
         wrenches = np.concatenate([wrenches[:, 1:], wrenches[:, -1:]], axis=1)
         return np.concatenate([payload.reshape(-1), wrenches.reshape(-1)])
+
+
+class DistributedMpc(AdmmMpc):
+    """ADMM coordinated here: each round, ``executor`` solves every agent's local NLP
+    (serially here by default), and this process forms s-bar and the duals, through the
+    emulated lossy channel where ``admm.channel`` sets one."""
+
+    def __init__(self, team: TeamModel, settings: MpcSettings,
+                 executor: LocalSolveExecutor | None = None,
+                 compiler: NlpCompiler | None = None) -> None:
+        super().__init__(team, settings)
+        channel = settings.admm.channel
+        self.channel = (None if channel.perfect
+                        else LossyChannel(channel, team.agent_count, self._shift_shared))
+        self.executor = self.local = executor or SerialExecutor(
+            LocalSolverSpec(settings, team.agent_count, compiler))
+
+    def _iterate(self, begin: AdmmStart, iterations: int
+                 ) -> tuple[list[NlpSolution], list[AdmmIteration], np.ndarray, np.ndarray,
+                            list[str]]:
+        na = self.team.agent_count
+        target_slice = self.problem.nlp.parameters.slice("consensus_target")
+        consensus, duals = begin.consensus, begin.duals
+        solutions: list[NlpSolution] = []
+        records: list[AdmmIteration] = []
+        for iteration in range(iterations):
+            requests = []
+            for i in range(na):
+                warm = ((solutions[i].constraint_multipliers, solutions[i].bound_multipliers)
+                        if solutions else begin.multipliers[i])
+                agent_parameters = begin.parameters[i].copy()
+                agent_parameters[target_slice] = consensus - duals[i]
+                requests.append(LocalSolveRequest(
+                    agent=i,
+                    initial_guess=solutions[i].decision if solutions else begin.guesses[i],
+                    parameters=agent_parameters,
+                    lower_bounds=begin.bounds[i][0],
+                    upper_bounds=begin.bounds[i][1],
+                    constraint_multipliers=None if warm is None else warm[0],
+                    bound_multipliers=None if warm is None else warm[1],
+                    warm_start=warm is not None,
+                    update=self._updates,
+                    iteration=iteration,
+                ))
+            results = self.local.solve_all(requests)
+            solutions = [fallback_solution(result, request.initial_guess)
+                         for result, request in zip(results, requests, strict=True)]
+            shared = np.array([self.problem.shared_trajectory(s.decision) for s in solutions])
+            # Through the network (ChannelSettings): the coordinator's consensus and duals see
+            # what arrived (held last); the residuals recorded are the agents' true gaps.
+            received, fresh = ((shared, np.ones(na, dtype=bool)) if self.channel is None
+                               else self.channel.exchange(shared, self._updates))
+            new_consensus, duals = consensus_step(received, duals, consensus, fresh)
+            records.append(self._residuals(shared - new_consensus, new_consensus - consensus,
+                                           [result.stats for result in results]))
+            consensus = new_consensus
+        return solutions, records, consensus, duals, []
 
 
 def _rms(values: np.ndarray) -> np.ndarray:

@@ -36,6 +36,9 @@ class CentralizedMpc:
     def reset(self) -> None:
         self._previous = None
 
+    def close(self) -> None:
+        """Nothing to release: the solver runs in this process."""
+
     def memory(self) -> ControllerMemory:
         """The warm start the next ``update`` will use (a reference, not a copy)."""
         return ControllerMemory([self._previous])

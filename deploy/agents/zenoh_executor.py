@@ -61,7 +61,6 @@ class ZenohExecutor:
         self._sequence = 0
         self._replies: dict[int, NlpSolution] = {}
         self._runs: dict[int, AgentAdmm | None] = {}
-        self.runs_admm = network.topology == "peer"  # DistributedMpc hands over whole updates
         self._condition = threading.Condition()
         self._processes: list[subprocess.Popen[bytes]] = []
         self._stderr: list[tempfile._TemporaryFileWrapper[bytes]] = []

@@ -191,8 +191,7 @@ def run_bench(agent_counts: list[int], solvers: list[str], duration_s: float, pa
                 result = run_closed_loop(controller, team, team, settings, scenario.reference,
                                          scenario.obstacles, duration_s)
             finally:
-                if isinstance(controller, DistributedMpc):
-                    controller.close()
+                controller.close()
             if (with_checks and mode == "distributed" and name != "ipopt-reference"
                     and include_reference and row_cache is cache):
                 checks.append(accuracy_check(team, settings, recorder.samples, cache))

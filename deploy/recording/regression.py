@@ -211,8 +211,7 @@ def regress_log(path: Path | str, cache: CompiledCodeCache | None = None,
             report.decisions += 1
             previous = update
     finally:
-        if isinstance(controller, DistributedMpc):
-            controller.close()
+        controller.close()
     expected = expectations_path(Path(path))
     if expected.exists():
         summary = (resimulate_run(log, cache, settings, wbc_settings) if resimulate

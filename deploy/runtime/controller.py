@@ -31,6 +31,7 @@ from core.model.obstacles import Obstacle
 from core.model.team import TeamModel
 from core.nmpc.admm_executor import LocalSolverSpec
 from core.nmpc.admm_mpc import DistributedMpc
+from core.nmpc.admm_peer_mpc import PeerDistributedMpc
 from core.nmpc.centralized_mpc import CentralizedMpc
 from core.nmpc.delay_compensation import predict_states
 from core.nmpc.inputs_builder import build_mpc_inputs
@@ -38,6 +39,7 @@ from core.nmpc.mpc_inputs import MpcInputs
 from core.nmpc.mpc_plan import MpcPlan
 from core.nmpc.reference import BrakingReference, WaypointReference
 from core.nmpc.settings import MpcSettings
+from core.nmpc.team_mpc import TeamMpc
 from deploy.agents.zenoh_executor import ZenohExecutor
 from deploy.config.scenario import Scenario
 from deploy.nmpc_runtime.process_executor import ProcessExecutor
@@ -98,7 +100,7 @@ class WbcStep:
 
 def build_team_mpc(scenario: Scenario, settings: MpcSettings, cache: CompiledCodeCache,
                    solve_first_here: bool = True, executor_spin_s: float = 0.0
-                   ) -> CentralizedMpc | DistributedMpc:
+                   ) -> TeamMpc:
     """The scenario's NMPC (centralized, or ADMM with the scenario's executor) on ``settings``
     (``Scenario.mpc_settings``), its solvers built from ``cache``. ``solve_first_here``: with
     the process executor, the first agent's solve runs in this process (False where this
@@ -107,12 +109,14 @@ def build_team_mpc(scenario: Scenario, settings: MpcSettings, cache: CompiledCod
     if scenario.controller.mode == "centralized":
         return CentralizedMpc(team, settings, compiler=cache)
     spec = LocalSolverSpec(settings, team.agent_count, cache)
-    executor: ProcessExecutor | ZenohExecutor | None = None
-    if scenario.controller.executor == "process":
-        executor = ProcessExecutor(spec, solve_first_here=solve_first_here,
-                                   spin_s=executor_spin_s)
-    elif scenario.controller.executor == "zenoh":
-        executor = ZenohExecutor(spec, scenario.controller.network, scenario.name)
+    network = scenario.controller.network
+    if scenario.controller.executor == "zenoh":
+        agents = ZenohExecutor(spec, network, scenario.name)
+        if network.topology == "peer":  # the agents run the iterations among themselves
+            return PeerDistributedMpc(team, settings, agents)
+        return DistributedMpc(team, settings, executor=agents)
+    executor = (ProcessExecutor(spec, solve_first_here=solve_first_here, spin_s=executor_spin_s)
+                if scenario.controller.executor == "process" else None)
     return DistributedMpc(team, settings, executor=executor, compiler=cache)
 
 
@@ -180,7 +184,7 @@ class TeamController:
         self.payload_estimate: np.ndarray | None = None
 
     @property
-    def controller(self) -> CentralizedMpc | DistributedMpc:
+    def controller(self) -> TeamMpc:
         """The NMPC of this process (``build_mpc`` True; else it runs elsewhere)."""
         if self._controller is None:
             raise RuntimeError("this TeamController was built without its NMPC "
@@ -200,8 +204,8 @@ class TeamController:
                              self.settings.sample_period_s, np.asarray(scenario.payload.size_m))
 
     def close(self) -> None:
-        """Stop the ADMM worker processes (if any)."""
-        if isinstance(self._controller, DistributedMpc):
+        """Stop the ADMM worker processes or agents (if any)."""
+        if self._controller is not None:
             self._controller.close()
 
     def reset(self, measurements: list[RobotMeasurement], start_s: float = 0.0) -> None:

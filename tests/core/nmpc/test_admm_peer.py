@@ -7,6 +7,7 @@ from __future__ import annotations
 import threading
 
 import numpy as np
+import pytest
 
 from core.nmpc.admm_executor import (
     AgentAdmm,
@@ -16,15 +17,15 @@ from core.nmpc.admm_executor import (
     run_agent_admm,
 )
 from core.nmpc.admm_mpc import DistributedMpc
+from core.nmpc.admm_peer_mpc import PeerDistributedMpc
 from core.nmpc.layout import shared_indices
+from core.nmpc.settings import ChannelSettings
 from tests.core.controller_fixtures import inputs_at_start, settings, team
 
 
 class _ThreadPeers:
     """Each agent's ADMM in a thread of its own with its own solver; the exchange is a barrier
     (every agent's s^i of an iteration, or None for the agents told to go silent)."""
-
-    runs_admm = True
 
     def __init__(self, spec: LocalSolverSpec, silent: int | None = None) -> None:
         self.solvers = [spec.build() for _ in range(spec.agent_count)]
@@ -83,9 +84,8 @@ def test_peers_reach_the_coordinators_consensus_on_identical_inputs() -> None:
     mpc, model = settings(), team()
     inputs = inputs_at_start(model, mpc)
     spec = LocalSolverSpec(mpc, model.agent_count)
-    coordinator, peers = DistributedMpc(model, mpc), DistributedMpc(model, mpc,
-                                                                    _ThreadPeers(spec))
-    assert peers.peer_topology and not coordinator.peer_topology
+    coordinator, peers = DistributedMpc(model, mpc), PeerDistributedMpc(model, mpc,
+                                                                        _ThreadPeers(spec))
     for _ in range(2):  # the second update starts from the shifted consensus and duals
         central, shared = coordinator.update(inputs), peers.update(inputs)
         assert shared.success and not shared.warnings
@@ -103,7 +103,7 @@ def test_peers_reach_the_coordinators_consensus_on_identical_inputs() -> None:
 def test_a_silent_peer_fails_the_update_of_every_robot() -> None:
     mpc, model = settings(), team()
     spec = LocalSolverSpec(mpc, model.agent_count)
-    plan = DistributedMpc(model, mpc, _ThreadPeers(spec, silent=1)).update(
+    plan = PeerDistributedMpc(model, mpc, _ThreadPeers(spec, silent=1)).update(
         inputs_at_start(model, mpc))
     assert not plan.success
     assert all(not stats.success for stats in plan.solves)
@@ -115,10 +115,9 @@ def test_an_agent_that_finished_fails_too_when_a_peer_stopped() -> None:
     """One agent completed its iterations, the other stopped: the update fails for both."""
     mpc, model = settings(), team()
     spec = LocalSolverSpec(mpc, model.agent_count)
-    controller = DistributedMpc(model, mpc, _ThreadPeers(spec))
+    controller = PeerDistributedMpc(model, mpc, _ThreadPeers(spec))
     inputs = inputs_at_start(model, mpc)
-    runs = controller.executor.run_admm(  # type: ignore[attr-defined]
-        *_first_requests(controller, inputs), 2)
+    runs = controller.peers.run_admm(*_first_requests(controller, inputs), 2)
     assert all(not run.failure for run in runs)
     runs[1].failure = "a peer was silent at ADMM iteration 1"
     consensus = runs[0].consensus[0]
@@ -128,7 +127,7 @@ def test_an_agent_that_finished_fails_too_when_a_peer_stopped() -> None:
     assert len(records) == 1 and kept is consensus
 
 
-def _first_requests(controller: DistributedMpc, inputs) -> tuple:  # noqa: ANN001
+def _first_requests(controller: PeerDistributedMpc, inputs) -> tuple:  # noqa: ANN001
     """Cold requests of a first update (zero guesses), with zero consensus and duals."""
     na, problem = controller.team.agent_count, controller.problem
     size = controller.weights.size
@@ -141,3 +140,11 @@ def _first_requests(controller: DistributedMpc, inputs) -> tuple:  # noqa: ANN00
                                                 consensus_target=np.zeros(size)),
             lower_bounds=lower, upper_bounds=upper, warm_start=False))
     return requests, np.zeros(size), np.zeros((na, size))
+
+
+def test_the_emulated_channel_is_refused_without_a_coordinator() -> None:
+    mpc, model = settings(), team()
+    lossy = mpc.model_copy(update={"admm": mpc.admm.model_copy(
+        update={"channel": ChannelSettings(max_delay_rounds=2)})})
+    with pytest.raises(ValueError, match="applies at the coordinator"):
+        PeerDistributedMpc(model, lossy, _ThreadPeers(LocalSolverSpec(mpc, model.agent_count)))

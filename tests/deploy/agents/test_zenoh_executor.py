@@ -16,6 +16,7 @@ import pytest
 from core.model.team import TeamModel
 from core.nmpc.admm_executor import LocalSolverSpec
 from core.nmpc.admm_mpc import DistributedMpc
+from core.nmpc.admm_peer_mpc import PeerDistributedMpc
 from deploy.agents import wire
 from deploy.agents.zenoh_executor import ZenohExecutor
 from deploy.agents.zenoh_session import (
@@ -164,8 +165,7 @@ def test_coordinator_free_agents_reach_the_coordinators_consensus(
     try:
         team = TeamModel.from_settings(run.scenario.team_settings(), srb_parameters)
         coordinated = DistributedMpc(team, run.control.settings, executor=executor)
-        free = DistributedMpc(team, run.control.settings, executor=peers)
-        assert free.peer_topology and peers.runs_admm
+        free = PeerDistributedMpc(team, run.control.settings, peers)
         for t in (0.0, 0.05):
             inputs = _inputs(run, t)
             central, shared = coordinated.update(inputs), free.update(inputs)
