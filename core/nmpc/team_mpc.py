@@ -1,6 +1,6 @@
 """The one controller protocol every team NMPC keeps: centralized
-(``core.nmpc.centralized_mpc``), ADMM coordinated here (``core.nmpc.admm_mpc``) and ADMM run by
-the agents (``core.nmpc.admm_peer_mpc``). Callers hold a ``TeamMpc`` and never ask which."""
+(``core.nmpc.centralized_mpc``), ADMM coordinated here (``core.admm.admm_mpc``) and ADMM run by
+the agents (``core.admm.admm_peer_mpc``). Callers hold a ``TeamMpc`` and never ask which."""
 
 from __future__ import annotations
 

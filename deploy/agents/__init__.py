@@ -8,4 +8,4 @@ No names are re-exported: import from the module that defines a name (its module
 listed in ``__all__``), so importing the package imports nothing else.
 """
 
-__all__ = ["agent", "wire", "zenoh_executor", "zenoh_session", "messages"]
+__all__ = ["agent", "messages", "wire", "zenoh_executor", "zenoh_session"]

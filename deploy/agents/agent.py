@@ -3,7 +3,7 @@
 The agent builds its local NLP once, announces itself (``Hello``: team, agent, problem digest,
 host, pid) every heartbeat, and answers each ``SolveRequest`` on its key with a ``SolveReply``.
 Coordinator-free topology (a request with ``admm_iterations``): the agent runs the update's
-ADMM iterations with its peers itself (``core.nmpc.admm_executor.run_agent_admm``), sending
+ADMM iterations with its peers itself (``core.admm.admm_executor.run_agent_admm``), sending
 its s^i to every agent (``SharedTrajectory``) and computing s-bar and every dual from theirs;
 a peer silent for ``peer_timeout_s`` ends its run as a failed solve, said in the reply.
 Malformed, foreign and other-problem requests are dropped and counted, never solved. When
@@ -24,7 +24,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from core.nmpc.admm_executor import LocalSolverSpec, run_agent_admm, solve_request
+from core.admm.admm_executor import LocalSolverSpec, run_agent_admm, solve_request
 from core.nmpc.layout import shared_indices
 from deploy.agents import wire
 from deploy.agents.zenoh_session import (

@@ -16,7 +16,7 @@ from dataclasses import dataclass
 import numpy as np
 from google.protobuf.message import DecodeError
 
-from core.nmpc.admm_executor import AgentAdmm, LocalSolveRequest, LocalSolverSpec
+from core.admm.admm_executor import AgentAdmm, LocalSolveRequest, LocalSolverSpec
 from core.nmpc.nlp_solver import NlpSolution, SolveStats
 from core.nmpc.stagewise_nlp import NlpProblem
 from deploy.agents.messages import admm_wire_pb2 as pb

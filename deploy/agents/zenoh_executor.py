@@ -25,7 +25,7 @@ from pathlib import Path
 import numpy as np
 import yaml
 
-from core.nmpc.admm_executor import AgentAdmm, LocalSolveRequest, LocalSolverSpec
+from core.admm.admm_executor import AgentAdmm, LocalSolveRequest, LocalSolverSpec
 from core.nmpc.nlp_solver import NlpSolution
 from core.nmpc.transport_problem import build_transport_problem
 from deploy.agents import wire

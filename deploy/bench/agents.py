@@ -17,16 +17,16 @@ from multiprocessing.connection import Connection
 
 import numpy as np
 
-from core.nmpc.admm_executor import LocalSolveRequest
+from core.admm.admm_executor import LocalSolveRequest
 from core.nmpc.nlp_solver import NlpSolution, SolveStats
 from core.nmpc.transport_problem import build_transport_problem
 from deploy.agents import wire
 from deploy.agents.zenoh_session import concrete_endpoint, open_session
 from deploy.bench.sim import bench_scenario
 from deploy.cli.conventions import Output
+from deploy.compute.codegen_cache import CompiledCodeCache
 from deploy.config.scenario import load_scenario
 from deploy.reports.table import Column, render_table
-from deploy.runtime.codegen_cache import CompiledCodeCache
 
 TEAM = "bench"
 _STATS = SolveStats("Solve_Succeeded", True, 1, 0.0, 0.0, 0.0)

@@ -14,8 +14,8 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from core.nmpc.admm_executor import LocalSolverSpec, SerialExecutor
-from core.nmpc.admm_mpc import DistributedMpc
+from core.admm.admm_executor import LocalSolverSpec, SerialExecutor
+from core.admm.admm_mpc import DistributedMpc
 from core.nmpc.centralized_mpc import CentralizedMpc
 from core.nmpc.settings import MpcSettings, SolverSettings
 from core.nmpc.transport_problem import build_transport_problem
@@ -23,9 +23,9 @@ from core.nmpc.warm_start import initial_guess
 from core.plant.closed_loop import ClosedLoopResult, run_closed_loop
 from core.plant.standard_scenarios import standard_scenario
 from deploy.bench.rti_fidelity import RtiFidelity, rti_fidelity
+from deploy.compute.codegen_cache import CompiledCodeCache
 from deploy.nmpc_runtime.process_executor import ProcessExecutor
 from deploy.reports.table import Column, render_table
-from deploy.runtime.codegen_cache import CompiledCodeCache
 from drivers.robot_descriptions import srb_parameters
 
 GENERIC_SUFFIX = "/generic-blas"  # label of the rows on CasADi's generic BLASFEO

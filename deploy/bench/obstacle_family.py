@@ -18,9 +18,9 @@ import math
 
 from core.nmpc.settings import BrakingSettings, MpcSettings, SafetySettings
 from deploy.cli.conventions import Output, error
+from deploy.compute.codegen_cache import CompiledCodeCache
 from deploy.config.scenario import Scenario
 from deploy.reports.table import Column, render_table
-from deploy.runtime.codegen_cache import CompiledCodeCache
 from deploy.runtime.sim_run import SimRun
 
 __all__ = ["family", "format_table", "run_bench", "run_case"]

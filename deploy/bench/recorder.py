@@ -23,12 +23,12 @@ from typing import Any
 import psutil
 
 from core.nmpc.settings import MpcSettings
+from deploy.compute.codegen_cache import CompiledCodeCache
 from deploy.config.scenario import load_scenario
 from deploy.recording.flight_recorder import FlightRecorder, RecorderSettings
 from deploy.recording.log_format import LOG_FORMAT_VERSION, RUN_METADATA
 from deploy.recording.run_record import open_run_recorder
 from deploy.reports.table import Column, render_table
-from deploy.runtime.codegen_cache import CompiledCodeCache
 from deploy.runtime.sim_run import SimRun
 
 

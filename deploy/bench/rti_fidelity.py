@@ -8,13 +8,13 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from core.nmpc.admm_executor import (
+from core.admm.admm_executor import (
     LocalSolveRequest,
     LocalSolverSpec,
     SerialExecutor,
     solve_request,
 )
-from core.nmpc.admm_mpc import DistributedMpc
+from core.admm.admm_mpc import DistributedMpc
 from core.nmpc.nlp_solver import NlpSolution
 from core.nmpc.settings import MpcSettings
 from core.plant.closed_loop import run_closed_loop

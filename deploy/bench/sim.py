@@ -9,9 +9,9 @@ ticks and the rest (physics, sensor reads, gait, metrics), so the table shows wh
 from __future__ import annotations
 
 from core.nmpc.settings import MpcSettings
+from deploy.compute.codegen_cache import CompiledCodeCache
 from deploy.config.scenario import load_scenario
 from deploy.reports.table import Column, render_table
-from deploy.runtime.codegen_cache import CompiledCodeCache
 from deploy.runtime.sim_run import SimRun
 
 

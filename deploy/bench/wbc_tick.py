@@ -14,9 +14,9 @@ import time
 
 import numpy as np
 
+from deploy.compute.codegen_cache import CompiledCodeCache
 from deploy.config.scenario import load_scenario
 from deploy.reports.table import Column, render_table
-from deploy.runtime.codegen_cache import CompiledCodeCache
 from deploy.runtime.sim_run import SimRun
 
 __all__ = ["PACES_S", "format_table", "run_bench"]

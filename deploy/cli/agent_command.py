@@ -39,12 +39,12 @@ def add_agent_parser(commands: argparse._SubParsersAction) -> None:
 
 
 def run_agent(args: argparse.Namespace) -> int:
-    from core.nmpc.admm_executor import LocalSolverSpec
+    from core.admm.admm_executor import LocalSolverSpec
     from core.nmpc.settings import MpcSettings
     from deploy.agents.agent import AdmmAgent, AgentAddress
+    from deploy.compute.codegen_cache import CompiledCodeCache
     from deploy.config.files import load_settings
     from deploy.config.scenario import load_scenario
-    from deploy.runtime.codegen_cache import CompiledCodeCache
 
     if args.scenario:
         scenario = load_scenario(args.scenario)

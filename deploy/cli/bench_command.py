@@ -38,8 +38,8 @@ def _bench_nmpc(args: argparse.Namespace) -> int:
 def _bench_sim(args: argparse.Namespace) -> int:
     from deploy.bench.sim import bench_scenario, format_table
     from deploy.cli.porter import mpc_settings
+    from deploy.compute.codegen_cache import CompiledCodeCache
     from deploy.config.scenario import shipped_scenarios
-    from deploy.runtime.codegen_cache import CompiledCodeCache
 
     out = Output(args)
     names = args.scenarios or shipped_scenarios()
@@ -64,7 +64,7 @@ def _bench_obstacles(args: argparse.Namespace) -> int:
 def _bench_recorder(args: argparse.Namespace) -> int:
     from deploy.bench.recorder import bench_memory, bench_overhead, format_tables
     from deploy.cli.porter import mpc_settings
-    from deploy.runtime.codegen_cache import CompiledCodeCache
+    from deploy.compute.codegen_cache import CompiledCodeCache
 
     out = Output(args)
     out.progress(f"porter bench recorder: {args.scenario}, {args.duration} s x {args.repeats} "

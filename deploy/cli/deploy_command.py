@@ -25,6 +25,9 @@ import yaml
 
 from core.model.conventions import PAYLOAD_NAME
 from deploy.cli.conventions import DIFFERS, OK, SAFE_STOP, STOPPED, Output
+from deploy.compute import realtime
+from deploy.compute.codegen_cache import CompiledCodeCache
+from deploy.compute.cpu_meter import RunningCpu, cpu_seconds
 from deploy.config.deploy_config import DeployConfig, load_deploy_config
 from deploy.config.files import ConfigError
 from deploy.nmpc_runtime.nmpc_process import NmpcProcess
@@ -33,11 +36,8 @@ from deploy.nmpc_runtime.nmpc_thread import NmpcThread
 from deploy.recording.flight_recorder import FlightRecorder
 from deploy.recording.log_format import DEPLOY_CONFIG_ATTACHMENT
 from deploy.recording.run_record import default_log_path, open_run_recorder
-from deploy.runtime import realtime
 from deploy.runtime.clock import PacedClock
-from deploy.runtime.codegen_cache import CompiledCodeCache
 from deploy.runtime.controller import TeamController
-from deploy.runtime.cpu_meter import RunningCpu, cpu_seconds
 from deploy.runtime.links import TeamLinks, open_links
 from deploy.runtime.loop import ControlLoop, LoopSettings
 from deploy.runtime.stop_request import StopRequest
@@ -187,7 +187,7 @@ def run_deploy(args: argparse.Namespace) -> int:
 
 
 class Scheduling(NamedTuple):
-    """How porter's processes are scheduled (``deploy.runtime.realtime``), as far as this
+    """How porter's processes are scheduled (``deploy.compute.realtime``), as far as this
     process may: the loop's SCHED_FIFO priority and CPUs, the NMPC process's nice value and
     CPUs (None / 0: the normal policy, any CPU)."""
 

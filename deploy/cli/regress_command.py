@@ -11,6 +11,7 @@ from pathlib import Path
 from core.locomotion.settings import WbcSettings
 from core.nmpc.settings import MpcSettings
 from deploy.cli.conventions import DIFFERS, OK, USAGE, Output, error
+from deploy.compute.codegen_cache import CompiledCodeCache
 from deploy.config.files import ConfigError, load_settings
 from deploy.recording.expectations import draft_expectations, expectations_path
 from deploy.recording.log_reader import LogError, LogFile
@@ -20,7 +21,6 @@ from deploy.recording.regression import (
     regress_log,
     replay_blas_target,
 )
-from deploy.runtime.codegen_cache import CompiledCodeCache
 
 __all__ = ["run_regress"]
 

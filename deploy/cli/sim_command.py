@@ -15,11 +15,11 @@ from rich.progress import BarColumn, Progress, TextColumn, TimeElapsedColumn
 from core.nmpc.settings import ChannelSettings, MpcSettings
 from deploy.cli.conventions import DIFFERS, OK, STOPPED, Output
 from deploy.cli.sim_arguments import delay_settings
+from deploy.compute.codegen_cache import CompiledCodeCache
 from deploy.config.files import ConfigError
 from deploy.config.scenario import Scenario, load_scenario
 from deploy.recording.flight_recorder import FlightRecorder, RecorderSettings
 from deploy.recording.run_record import default_log_path, open_run_recorder
-from deploy.runtime.codegen_cache import CompiledCodeCache
 from deploy.runtime.sim_run import SimRun
 from deploy.runtime.stop_request import StopRequest
 

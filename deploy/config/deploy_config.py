@@ -114,12 +114,12 @@ class RatesConfig(StrictModel):
     nmpc_hz: float = Field(60.0, ge=10.0, le=200.0)
     max_plan_age_s: float = Field(0.25, gt=0, le=1.0)  # older active plan while running: stop
     max_armed_s: float = Field(2.0, gt=0, le=30.0)  # ARMED this long with no first plan: stop
-    # SCHED_FIFO priority of the loop's thread while it runs (deploy.runtime.realtime); null:
+    # SCHED_FIFO priority of the loop's thread while it runs (deploy.compute.realtime); null:
     # normal scheduling. On robots a priority that cannot be set is an error; in simulation
     # the loop then runs at normal priority with a warning.
     loop_priority: int | None = Field(None, ge=1, le=99)
     # the CPU the loop's process (its thread and helper threads) runs on while the loop runs
-    # (deploy.runtime.realtime); null: any.
+    # (deploy.compute.realtime); null: any.
     # A CPU this process may not use is an error on robots, a warning in simulation.
     loop_cpu: int | None = Field(None, ge=0, le=1023)
 
@@ -144,7 +144,7 @@ class NmpcRunConfig(StrictModel):
     runner: Literal["process", "thread"] = "process"
     executor: Literal["serial", "process", "zenoh"] | None = None
     admm_iterations: int | None = Field(None, ge=1, le=20)
-    # nice value of the NMPC's process (runner: process; deploy.runtime.realtime): below 0 it
+    # nice value of the NMPC's process (runner: process; deploy.compute.realtime): below 0 it
     # gets the CPU before normal-priority processes. A value it cannot take is an error on
     # robots, a warning (and 0) in simulation.
     nice: int = Field(0, ge=-20, le=19)

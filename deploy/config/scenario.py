@@ -288,7 +288,7 @@ class Scenario(StrictModel):
                      ) -> MpcSettings:
         """``base`` (default: the paper's) with this scenario's safety distance and ADMM
         parameters; the wrench-only mode also drops the coupling constraints and sets
-        ``admm.rho_state`` to 0 (the paper's ablation, see ``core.nmpc.admm_mpc``).
+        ``admm.rho_state`` to 0 (the paper's ablation, see ``core.admm.admm_mpc``).
 
         Precedence, field by field: a value set explicitly in one place (``base``'s YAML,
         named ``base_source`` in errors, or this scenario's file) wins over the other's

@@ -28,13 +28,13 @@ from multiprocessing.connection import Connection
 
 from core.nmpc.mpc_inputs import MpcInputs
 from core.nmpc.settings import MpcSettings
+from deploy.compute import realtime
+from deploy.compute.codegen_cache import CompiledCodeCache
+from deploy.compute.gc_pauses import freeze_startup_objects
+from deploy.compute.process_names import name_this_process
 from deploy.config.scenario import Scenario
 from deploy.nmpc_runtime.nmpc_thread import NmpcResult
-from deploy.runtime import realtime
-from deploy.runtime.codegen_cache import CompiledCodeCache
 from deploy.runtime.controller import NmpcDecision, build_team_mpc
-from deploy.runtime.gc_pauses import freeze_startup_objects
-from deploy.runtime.process_names import name_this_process
 
 __all__ = ["NmpcProcess", "NmpcProcessError"]
 
@@ -84,7 +84,7 @@ class NmpcProcess:
     ``wall_s`` is converted to it from the system's monotonic clock, which both processes
     share. Construction blocks until the NMPC is built (``start_timeout_s``: a cold cache
     compiles for minutes). ``nice``: the process's nice value, ``cpus``: the CPUs it (and its
-    ADMM workers) may run on, None: any (``deploy.runtime.realtime``).
+    ADMM workers) may run on, None: any (``deploy.compute.realtime``).
     """
 
     def __init__(self, scenario: Scenario, settings: MpcSettings, cache: CompiledCodeCache,

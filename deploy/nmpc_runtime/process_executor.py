@@ -39,11 +39,11 @@ from multiprocessing.process import BaseProcess
 
 import numpy as np
 
-from core.nmpc.admm_executor import LocalSolveRequest, LocalSolverSpec, solve_request
+from core.admm.admm_executor import LocalSolveRequest, LocalSolverSpec, solve_request
 from core.nmpc.nlp_solver import NlpSolution, NlpSolver, SolveStats
+from deploy.compute.gc_pauses import freeze_startup_objects
+from deploy.compute.process_names import name_this_process
 from deploy.nmpc_runtime.solve_slots import SolveSlots
-from deploy.runtime.gc_pauses import freeze_startup_objects
-from deploy.runtime.process_names import name_this_process
 
 MAX_SPIN_S = 0.01
 

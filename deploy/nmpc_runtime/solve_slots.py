@@ -24,7 +24,7 @@ from pathlib import Path
 
 import numpy as np
 
-from core.nmpc.admm_executor import LocalSolveRequest
+from core.admm.admm_executor import LocalSolveRequest
 from core.nmpc.nlp_solver import NlpSolution, SolveStats
 
 __all__ = ["RequestHeader", "SlotLayout", "SolveSlots"]

@@ -12,9 +12,9 @@ import numpy as np
 
 from core.nmpc.settings import MpcSettings
 from deploy.cli.conventions import DIFFERS, OK, Output
+from deploy.compute.codegen_cache import CompiledCodeCache
 from deploy.config.scenario import load_scenario
 from deploy.reports.table import Column, render_table
-from deploy.runtime.codegen_cache import CompiledCodeCache
 from deploy.runtime.sim_run import SimRun
 
 # scenario -> what the paper shows for it (it reports safety and completion, no numbers)

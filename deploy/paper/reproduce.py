@@ -11,11 +11,11 @@ import numpy as np
 
 from core.nmpc.settings import MpcSettings
 from deploy.cli.conventions import DIFFERS, OK, Output
+from deploy.compute.codegen_cache import CompiledCodeCache
 from deploy.config.scenario import Scenario, load_scenario
 from deploy.paper.claims import CLAIMS, Claim, Variant
 from deploy.recording.expectations import flatten_summary
 from deploy.reports.table import Column, render_table
-from deploy.runtime.codegen_cache import CompiledCodeCache
 from deploy.runtime.sim_run import SimRun
 
 

@@ -5,5 +5,5 @@ listed in ``__all__``), so importing the package imports nothing else.
 """
 
 __all__ = ["expectations", "fault_timeline", "flight_recorder", "joint_speeds", "log_format",
-           "log_reader", "loop_recording", "regression", "resimulation", "robot_scene",
-           "run_record", "messages"]
+           "log_reader", "loop_recording", "messages", "regression", "resimulation",
+           "robot_scene", "run_record"]

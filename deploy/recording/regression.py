@@ -24,15 +24,17 @@ from pathlib import Path
 
 import numpy as np
 
+from core.admm.admm_mpc import DistributedMpc
 from core.locomotion.settings import WbcSettings
 from core.model.team import TeamModel
-from core.nmpc.admm_mpc import DistributedMpc
 from core.nmpc.centralized_mpc import CentralizedMpc
 from core.nmpc.mpc_inputs import MpcInputs
 from core.nmpc.mpc_plan import MpcPlan
 from core.nmpc.nlp_solver import NlpSolution, SolveStats
 from core.nmpc.settings import MpcSettings
 from core.nmpc.warm_start import ControllerMemory
+from deploy.compute.blas_kernels import GENERIC, cpu_target, host_cpu_flags
+from deploy.compute.codegen_cache import CompiledCodeCache
 from deploy.recording import log_format as fmt
 from deploy.recording.expectations import (
     check_expectations,
@@ -44,8 +46,6 @@ from deploy.recording.messages import porter_log_pb2 as pb
 from deploy.recording.resimulation import logged_run
 from deploy.recording.resimulation import resimulate as resimulate_run
 from deploy.reports.table import Column, render_table
-from deploy.runtime.blas_kernels import GENERIC, cpu_target, host_cpu_flags
-from deploy.runtime.codegen_cache import CompiledCodeCache
 from drivers.robot_descriptions import srb_parameters
 
 # Tolerances of a replay. The same compiled solver on the same inputs is deterministic only up

@@ -14,11 +14,11 @@ import yaml
 
 from core.locomotion.settings import WbcSettings
 from core.nmpc.settings import MpcSettings
+from deploy.compute.codegen_cache import CompiledCodeCache
 from deploy.config.files import validate_settings
 from deploy.config.scenario import Scenario
 from deploy.recording import log_format as fmt
 from deploy.recording.log_reader import LogError, LogFile
-from deploy.runtime.codegen_cache import CompiledCodeCache
 from deploy.runtime.sim_run import SimRun
 
 

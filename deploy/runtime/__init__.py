@@ -5,6 +5,5 @@ No names are re-exported: import from the module that defines a name (its module
 listed in ``__all__``), so importing the package imports nothing else.
 """
 
-__all__ = ["blas_kernels", "clock", "codegen_cache", "controller", "cpu_meter", "gc_pauses",
-           "links", "loop", "loop_interfaces", "process_names", "realtime", "run_metrics",
-           "sim_run", "stale_state", "stop_request", "timing"]
+__all__ = ["clock", "controller", "links", "loop", "loop_interfaces", "run_metrics", "sim_run",
+           "stale_state", "state_pipeline", "stop_request", "team_commands", "timing"]

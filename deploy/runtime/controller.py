@@ -22,6 +22,9 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
+from core.admm.admm_executor import LocalSolverSpec
+from core.admm.admm_mpc import DistributedMpc
+from core.admm.admm_peer_mpc import PeerDistributedMpc
 from core.estimation.payload_estimator import PayloadEstimator
 from core.locomotion.gait import TrotGait
 from core.locomotion.plan_tracking import LegCoordinator, wbc_target
@@ -29,9 +32,6 @@ from core.locomotion.settings import WbcSettings
 from core.locomotion.whole_body_control import WbcOutput, WholeBodyController
 from core.model.obstacles import Obstacle
 from core.model.team import TeamModel
-from core.nmpc.admm_executor import LocalSolverSpec
-from core.nmpc.admm_mpc import DistributedMpc
-from core.nmpc.admm_peer_mpc import PeerDistributedMpc
 from core.nmpc.centralized_mpc import CentralizedMpc
 from core.nmpc.delay_compensation import predict_states
 from core.nmpc.inputs_builder import build_mpc_inputs
@@ -41,11 +41,11 @@ from core.nmpc.reference import BrakingReference, WaypointReference
 from core.nmpc.settings import MpcSettings
 from core.nmpc.team_mpc import TeamMpc
 from deploy.agents.zenoh_executor import ZenohExecutor
+from deploy.compute.codegen_cache import CompiledCodeCache
 from deploy.config.scenario import Scenario
 from deploy.nmpc_runtime.process_executor import ProcessExecutor
 from deploy.recording.flight_recorder import FlightRecorder
 from deploy.recording.loop_recording import LoopRecording
-from deploy.runtime.codegen_cache import CompiledCodeCache
 from deploy.runtime.state_pipeline import mocap_state, wbc_state
 from deploy.safety.run_sequence import Braking
 from drivers.interfaces import JointCommand, MocapFrame, RobotMeasurement

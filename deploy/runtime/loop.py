@@ -23,12 +23,12 @@ from collections.abc import Callable
 from typing import Literal, TextIO
 
 from core.model.conventions import PAYLOAD_NAME
+from deploy.compute.gc_pauses import GcPauses
 from deploy.nmpc_runtime.nmpc_process import NmpcProcessError
 from deploy.nmpc_runtime.nmpc_schedule import NmpcSchedule
 from deploy.recording.loop_recording import LoopRecording
 from deploy.runtime.clock import LoopClock
 from deploy.runtime.controller import TeamController, WbcStep
-from deploy.runtime.gc_pauses import GcPauses
 from deploy.runtime.links import TeamLinks
 from deploy.runtime.loop_interfaces import Heartbeat, LoopHooks, LoopSettings
 from deploy.runtime.stale_state import StaleStateHold, link_notes

@@ -35,6 +35,7 @@ from core.model.rotations import (
 )
 from core.nmpc.mpc_plan import MpcPlan
 from core.nmpc.settings import MpcSettings
+from deploy.compute.codegen_cache import CompiledCodeCache
 from deploy.config.deploy_config import PostureConfig, RatesConfig
 from deploy.config.scenario import Scenario
 from deploy.nmpc_runtime.nmpc_lockstep import LockstepNmpc
@@ -43,7 +44,6 @@ from deploy.nmpc_runtime.nmpc_schedule import NmpcSchedule
 from deploy.recording.flight_recorder import FlightRecorder
 from deploy.recording.loop_recording import LoopRecording
 from deploy.runtime.clock import LockstepClock
-from deploy.runtime.codegen_cache import CompiledCodeCache
 from deploy.runtime.controller import NmpcDecision, TeamController, WbcStep
 from deploy.runtime.links import MocapTracker, TeamLinks
 from deploy.runtime.loop import ControlLoop, LoopSettings

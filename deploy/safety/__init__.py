@@ -4,4 +4,4 @@ No names are re-exported: import from the module that defines a name (its module
 listed in ``__all__``), so importing the package imports nothing else.
 """
 
-__all__ = ["checks", "posture", "preflight", "settings", "supervisor", "watchdog"]
+__all__ = ["checks", "posture", "preflight", "run_sequence", "settings", "supervisor", "watchdog"]

@@ -27,8 +27,8 @@ from multiprocessing.connection import Connection
 from multiprocessing.sharedctypes import Synchronized
 from typing import TYPE_CHECKING
 
-from deploy.runtime import realtime
-from deploy.runtime.process_names import name_this_process
+from deploy.compute import realtime
+from deploy.compute.process_names import name_this_process
 from drivers.link_errors import DriverError
 from drivers.unitree.a1_driver import A1Driver
 from drivers.unitree.go2_driver import Go2Driver

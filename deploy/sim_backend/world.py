@@ -51,11 +51,11 @@ import can
 import numpy as np
 
 from core.model.conventions import JOINT_COUNT, PAYLOAD_NAME
+from deploy.compute.gc_pauses import freeze_startup_objects
+from deploy.compute.process_names import name_this_process
+from deploy.compute.realtime import set_process_cpus, set_process_priority
 from deploy.config.deploy_config import DeployConfig, Go2Link
 from deploy.config.scenario import Scenario
-from deploy.runtime.gc_pauses import freeze_startup_objects
-from deploy.runtime.process_names import name_this_process
-from deploy.runtime.realtime import set_process_cpus, set_process_priority
 from deploy.safety.checks import tilt_rad
 from deploy.safety.posture import sitting_posture
 from deploy.sim_backend.world_faults import inject_due_faults, network_faults

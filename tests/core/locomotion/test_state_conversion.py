@@ -12,7 +12,7 @@ import pytest
 from core.locomotion.state_conversion import StateConversion
 from core.locomotion.whole_body_control import FloatingBaseState, WholeBodyController
 from core.model.rotations import cross3, euler_from_rotation
-from deploy.runtime.codegen_cache import CompiledCodeCache
+from deploy.compute.codegen_cache import CompiledCodeCache
 from drivers.robot_descriptions import FOOT_RADIUS_M, load_pinocchio_model, standing_configuration
 
 

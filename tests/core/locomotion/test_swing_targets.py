@@ -11,7 +11,7 @@ import pytest
 from core.locomotion.gait import TrotGait
 from core.locomotion.plan_tracking import LegCoordinator
 from core.locomotion.swing_trajectory import swing_point
-from deploy.runtime.codegen_cache import CompiledCodeCache
+from deploy.compute.codegen_cache import CompiledCodeCache
 from drivers.robot_descriptions import srb_parameters
 from tests.core.locomotion.gait_reference import swing_progress
 

@@ -20,7 +20,7 @@ from core.locomotion.whole_body_control import (
     structural_patterns,
 )
 from core.model.rotations import rotation_from_euler
-from deploy.runtime.codegen_cache import CompiledCodeCache
+from deploy.compute.codegen_cache import CompiledCodeCache
 from drivers.robot_descriptions import FOOT_RADIUS_M, load_pinocchio_model, standing_configuration
 
 _INF = 1e30

@@ -15,7 +15,7 @@ from core.nmpc.nlp_solver import InPlaceCall, NlpSolver
 from core.nmpc.settings import MpcSettings, SafetySettings, SolverSettings
 from core.nmpc.transport_problem import build_transport_problem
 from core.nmpc.warm_start import initial_guess
-from deploy.runtime.codegen_cache import CompiledCodeCache
+from deploy.compute.codegen_cache import CompiledCodeCache
 from tests.core.controller_fixtures import inputs_at_start, team
 
 

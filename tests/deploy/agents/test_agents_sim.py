@@ -13,8 +13,8 @@ import pytest
 
 from deploy.agents.zenoh_session import AgentNetwork, concrete_endpoint
 from deploy.cli.porter import main
+from deploy.compute.codegen_cache import CompiledCodeCache
 from deploy.config.scenario import load_scenario
-from deploy.runtime.codegen_cache import CompiledCodeCache
 from deploy.runtime.sim_run import SimRun
 
 ROOT = Path(__file__).resolve().parents[3]

@@ -8,7 +8,7 @@ import math
 import numpy as np
 import pytest
 
-from core.nmpc.admm_executor import AgentAdmm, LocalSolveRequest, LocalSolverSpec
+from core.admm.admm_executor import AgentAdmm, LocalSolveRequest, LocalSolverSpec
 from core.nmpc.nlp_solver import NlpSolution, SolveStats
 from core.nmpc.settings import MpcSettings
 from deploy.agents import wire

@@ -13,10 +13,10 @@ from collections.abc import Iterator
 import numpy as np
 import pytest
 
+from core.admm.admm_executor import LocalSolverSpec
+from core.admm.admm_mpc import DistributedMpc
+from core.admm.admm_peer_mpc import PeerDistributedMpc
 from core.model.team import TeamModel
-from core.nmpc.admm_executor import LocalSolverSpec
-from core.nmpc.admm_mpc import DistributedMpc
-from core.nmpc.admm_peer_mpc import PeerDistributedMpc
 from deploy.agents import wire
 from deploy.agents.zenoh_executor import ZenohExecutor
 from deploy.agents.zenoh_session import (
@@ -26,8 +26,8 @@ from deploy.agents.zenoh_session import (
     open_session,
     reply_key,
 )
+from deploy.compute.codegen_cache import CompiledCodeCache
 from deploy.config.scenario import load_scenario
-from deploy.runtime.codegen_cache import CompiledCodeCache
 from deploy.runtime.sim_run import SimRun
 from drivers.robot_descriptions import srb_parameters
 

@@ -22,13 +22,13 @@ from core.estimation.base_velocity import BaseVelocityEstimator
 from core.model.conventions import LEG_NAMES
 from deploy.bench.deploy_runs import deploy_row, format_budget, format_table, scaled_config
 from deploy.cli.porter import main
+from deploy.compute import realtime
+from deploy.compute.blas_kernels import GENERIC, cpu_target, host_cpu_flags
 from deploy.config.deploy_config import CONFIG_DIR, load_deploy_config
 from deploy.config.files import ConfigError
 from deploy.config.scenario import load_scenario
 from deploy.recording.flight_recorder import RecorderSettings
 from deploy.recording.log_reader import LogFile
-from deploy.runtime import realtime
-from deploy.runtime.blas_kernels import GENERIC, cpu_target, host_cpu_flags
 from deploy.runtime.timing import Pacer, PeriodStats
 from deploy.safety.posture import PostureMove, sitting_posture, standing_posture
 from drivers.interfaces import JointCommand

@@ -11,11 +11,11 @@ import numpy as np
 import pytest
 
 from core.nmpc.mpc_plan import MpcPlan
+from deploy.compute.codegen_cache import CompiledCodeCache
 from deploy.config.scenario import load_scenario
 from deploy.nmpc_runtime.nmpc_process import NmpcProcess, NmpcProcessError
 from deploy.nmpc_runtime.nmpc_thread import NmpcResult
 from deploy.recording.regression import TOLERANCES
-from deploy.runtime.codegen_cache import CompiledCodeCache
 from deploy.runtime.sim_run import SimRun
 
 

@@ -11,8 +11,8 @@ from pathlib import Path
 import numpy as np
 import pytest
 
-from core.nmpc.admm_executor import LocalSolveRequest, LocalSolverSpec
-from core.nmpc.admm_mpc import DistributedMpc
+from core.admm.admm_executor import LocalSolveRequest, LocalSolverSpec
+from core.admm.admm_mpc import DistributedMpc
 from deploy.nmpc_runtime.process_executor import ProcessExecutor
 from deploy.nmpc_runtime.solve_slots import SHM_DIRECTORY
 from tests.core.controller_fixtures import inputs_at_start, settings, team
@@ -110,10 +110,10 @@ def test_no_solve_here_in_a_process_that_loaded_casadis_blasfeo_first() -> None:
     code = textwrap.dedent("""
         import platform
         import casadi as ca
-        from core.nmpc.admm_executor import LocalSolveRequest, LocalSolverSpec
+        from core.admm.admm_executor import LocalSolveRequest, LocalSolverSpec
         from deploy.nmpc_runtime.process_executor import ProcessExecutor
-        from deploy.runtime.blas_kernels import cpu_target, host_cpu_flags
-        from deploy.runtime.codegen_cache import CompiledCodeCache
+        from deploy.compute.blas_kernels import cpu_target, host_cpu_flags
+        from deploy.compute.codegen_cache import CompiledCodeCache
         from tests.core.controller_fixtures import settings
         x = ca.SX.sym("x")
         ca.nlpsol("s", "fatrop", {"x": x, "f": x * x})  # maps CasADi's libblasfeo

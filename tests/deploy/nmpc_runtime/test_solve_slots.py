@@ -8,7 +8,7 @@ from multiprocessing.connection import Connection
 
 import numpy as np
 
-from core.nmpc.admm_executor import LocalSolveRequest
+from core.admm.admm_executor import LocalSolveRequest
 from core.nmpc.nlp_solver import NlpSolution, SolveStats
 from deploy.nmpc_runtime.solve_slots import SHM_DIRECTORY, SlotLayout, SolveSlots
 

@@ -6,10 +6,10 @@ from pathlib import Path
 
 import pytest
 
+from deploy.compute.codegen_cache import CompiledCodeCache
 from deploy.config.scenario import load_scenario
 from deploy.recording.flight_recorder import RecorderSettings
 from deploy.recording.run_record import open_run_recorder
-from deploy.runtime.codegen_cache import CompiledCodeCache
 from deploy.runtime.sim_run import SimRun
 
 

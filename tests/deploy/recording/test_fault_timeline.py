@@ -11,12 +11,12 @@ import numpy as np
 import pytest
 
 from deploy.cli.porter import main
+from deploy.compute.codegen_cache import CompiledCodeCache
 from deploy.config.scenario import load_scenario
 from deploy.recording.fault_timeline import fault_timelines, format_timelines
 from deploy.recording.flight_recorder import RecorderSettings
 from deploy.recording.log_reader import LogFile
 from deploy.recording.run_record import open_run_recorder
-from deploy.runtime.codegen_cache import CompiledCodeCache
 from deploy.runtime.sim_run import SimRun
 from drivers.interfaces import JointCommand, RobotDriver, RobotMeasurement
 

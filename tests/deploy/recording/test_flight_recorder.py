@@ -18,6 +18,7 @@ from mcap.reader import make_reader
 from mcap_protobuf.decoder import DecoderFactory
 
 from deploy.cli.porter import main
+from deploy.compute.codegen_cache import CompiledCodeCache
 from deploy.config.scenario import load_scenario
 from deploy.recording import log_format as fmt
 from deploy.recording.flight_recorder import FlightRecorder, RecorderSettings
@@ -25,7 +26,6 @@ from deploy.recording.log_reader import LogError, LogFile, recover
 from deploy.recording.messages import porter_log_pb2 as pb
 from deploy.recording.robot_scene import LINK_TF, ROBOT_SCENE
 from deploy.recording.run_record import open_run_recorder
-from deploy.runtime.codegen_cache import CompiledCodeCache
 from deploy.runtime.sim_run import SimRun
 
 REPOSITORY = Path(__file__).resolve().parents[3]

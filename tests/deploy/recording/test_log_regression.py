@@ -14,6 +14,7 @@ import pytest
 import yaml
 
 from deploy.cli.porter import main
+from deploy.compute.blas_kernels import GENERIC, cpu_target, host_cpu_flags
 from deploy.recording.log_format import (
     MPC_SETTINGS_ATTACHMENT,
     RUN_METADATA,
@@ -21,7 +22,6 @@ from deploy.recording.log_format import (
 )
 from deploy.recording.log_reader import LogFile
 from deploy.recording.regression import TOLERANCES, regress_log, replay_blas_target
-from deploy.runtime.blas_kernels import GENERIC, cpu_target, host_cpu_flags
 
 ROOT = Path(__file__).resolve().parents[3]
 LOGS = ROOT / "logs"
@@ -61,7 +61,7 @@ def test_shipped_logs_pass_on_their_kernels(tmp_path: Path) -> None:
 _OTHER_KERNELS_FIRST = """
 import json, sys
 from deploy.recording.regression import format_report, regress_log
-from deploy.runtime.codegen_cache import CompiledCodeCache
+from deploy.compute.codegen_cache import CompiledCodeCache
 cache = CompiledCodeCache(blas_target=sys.argv[1])
 cache.blas_kernels()  # as a test or a notebook that built a solver before the replay
 report = regress_log(sys.argv[2], cache, max_decisions=3)

@@ -12,8 +12,8 @@ import pytest
 from core.nmpc.mpc_plan import MpcPlan
 from core.nmpc.reference import BrakingReference
 from core.nmpc.settings import BrakingSettings, MpcSettings
+from deploy.compute.codegen_cache import CompiledCodeCache
 from deploy.config.scenario import load_scenario
-from deploy.runtime.codegen_cache import CompiledCodeCache
 from deploy.runtime.controller import SETTLE_S, TeamController
 from deploy.runtime.sim_run import SimRun
 

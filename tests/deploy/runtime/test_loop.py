@@ -11,12 +11,12 @@ import numpy as np
 import pytest
 
 from core.nmpc.settings import BrakingSettings, MpcSettings
+from deploy.compute.codegen_cache import CompiledCodeCache
 from deploy.config.deploy_config import PostureConfig, RatesConfig
 from deploy.config.scenario import Scenario, load_scenario
 from deploy.nmpc_runtime.nmpc_lockstep import LockstepNmpc
 from deploy.nmpc_runtime.nmpc_schedule import NmpcSchedule
 from deploy.runtime.clock import PacedClock
-from deploy.runtime.codegen_cache import CompiledCodeCache
 from deploy.runtime.loop import ControlLoop, LoopSettings
 from deploy.runtime.sim_run import SimRun
 from deploy.safety.preflight import PreflightCheck, PreflightReport

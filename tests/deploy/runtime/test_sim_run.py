@@ -10,8 +10,8 @@ from pathlib import Path
 
 import pytest
 
+from deploy.compute.codegen_cache import CompiledCodeCache
 from deploy.config.scenario import Scenario, load_scenario, shipped_scenarios
-from deploy.runtime.codegen_cache import CompiledCodeCache
 from deploy.runtime.sim_run import LOCKSTEP_EXECUTOR_SPIN_S, SimRun, lockstep_spin_s
 
 ROOT = Path(__file__).resolve().parents[3]

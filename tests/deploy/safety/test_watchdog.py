@@ -13,8 +13,8 @@ import numpy as np
 import pytest
 
 from core.plant.standard_scenarios import ring_team_settings
+from deploy.compute import realtime
 from deploy.config.deploy_config import DeployConfig, Go2Link, load_deploy_config
-from deploy.runtime import realtime
 from deploy.safety.watchdog import Watchdog, WatchdogSpec
 from drivers.interfaces import JointCommand
 from drivers.link_errors import DriverError

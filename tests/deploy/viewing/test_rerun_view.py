@@ -15,13 +15,13 @@ import pytest
 import rerun.chunk as rrc
 
 from deploy.cli.porter import main
+from deploy.compute.codegen_cache import CompiledCodeCache
 from deploy.config.scenario import load_scenario
 from deploy.recording import log_format as fmt
 from deploy.recording.flight_recorder import FlightRecorder
 from deploy.recording.log_reader import LogFile
 from deploy.recording.messages import porter_log_pb2 as pb
 from deploy.recording.run_record import open_run_recorder
-from deploy.runtime.codegen_cache import CompiledCodeCache
 from deploy.runtime.sim_run import SimRun
 from deploy.viewing.rerun_view import live_sink
 

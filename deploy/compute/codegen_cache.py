@@ -21,7 +21,7 @@ variables, 17 iterations; interpreted CasADi: 42 ms per solve):
 ``-O1`` gets the ``-O2`` solve time for 40 % of its compile time.
 
 The cache also owns the BLAS kernels under the solvers: before its first library is handed
-out in a process it loads BLASFEO built for this CPU (``deploy.runtime.blas_kernels``), so the
+out in a process it loads BLASFEO built for this CPU (``deploy.compute.blas_kernels``), so the
 fatrop and hpipm plugins CasADi loads afterwards use it instead of CasADi's generic build.
 """
 
@@ -37,7 +37,7 @@ import threading
 from collections.abc import Callable, Iterator
 from pathlib import Path
 
-from deploy.runtime.blas_kernels import BlasKernels, load_blas_kernels
+from deploy.compute.blas_kernels import BlasKernels, load_blas_kernels
 
 DEFAULT_FLAGS: tuple[str, ...] = ("-O1",)
 CACHE_DIR_VARIABLE = "PORTER_CACHE_DIR"

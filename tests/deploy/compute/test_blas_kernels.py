@@ -10,7 +10,7 @@ from pathlib import Path
 
 import pytest
 
-from deploy.runtime.blas_kernels import (
+from deploy.compute.blas_kernels import (
     GENERIC,
     SONAME,
     build_blasfeo,
@@ -56,8 +56,8 @@ _PROBE = """
 import json, sys
 import casadi as ca
 import numpy as np
-from deploy.runtime.blas_kernels import loaded_blasfeo
-from deploy.runtime.codegen_cache import CompiledCodeCache
+from deploy.compute.blas_kernels import loaded_blasfeo
+from deploy.compute.codegen_cache import CompiledCodeCache
 kernels = CompiledCodeCache(blas_target=sys.argv[1]).blas_kernels()
 # A small optimal-control problem in fatrop's stage form: double integrator to the origin.
 n, x, u, g, w = 10, [], [], [], []

@@ -6,7 +6,7 @@ from __future__ import annotations
 import gc
 import weakref
 
-from deploy.runtime.gc_pauses import GcPauses
+from deploy.compute.gc_pauses import GcPauses
 
 
 class _Node:

@@ -4,7 +4,7 @@ so the same code runs serially, in worker processes
 (``deploy.agents.zenoh_executor``).
 
 The consensus and dual step (``consensus_step``) is here too, so that the coordinator
-(``core.nmpc.admm_mpc``) and agents that run the ADMM among themselves without one
+(``core.admm.admm_mpc``) and agents that run the ADMM among themselves without one
 (``run_agent_admm``: every agent receives every s^j and computes s-bar and all duals) do
 the same arithmetic: from the same inputs they reach the same s-bar, bit for bit."""
 

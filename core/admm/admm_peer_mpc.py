@@ -1,7 +1,7 @@
 """Coordinator-free ADMM (paper Sec. III, the agents' side of the iterations): the whole update
 goes to agents that solve, exchange s^i with each other and compute s-bar and every dual
 themselves (``deploy.agents``: ``porter agent`` over Zenoh with ``network.topology: peer``).
-This process prepares the update (``core.nmpc.admm_mpc.AdmmMpc``), hands it over and keeps
+This process prepares the update (``core.admm.admm_mpc.AdmmMpc``), hands it over and keeps
 s-bar and the duals between updates."""
 
 from __future__ import annotations
@@ -10,9 +10,9 @@ from dataclasses import replace
 
 import numpy as np
 
+from core.admm.admm_executor import AgentAdmm, LocalSolveRequest
+from core.admm.admm_mpc import AdmmMpc, AdmmStart, PeerExecutor
 from core.model.team import TeamModel
-from core.nmpc.admm_executor import AgentAdmm, LocalSolveRequest
-from core.nmpc.admm_mpc import AdmmMpc, AdmmStart, PeerExecutor
 from core.nmpc.mpc_plan import AdmmIteration
 from core.nmpc.nlp_solver import NlpSolution
 from core.nmpc.settings import MpcSettings

@@ -5,8 +5,8 @@ from __future__ import annotations
 import numpy as np
 import pytest
 
+from core.admm.admm_mpc import DistributedMpc
 from core.model.obstacles import Obstacle
-from core.nmpc.admm_mpc import DistributedMpc
 from core.nmpc.centralized_mpc import CentralizedMpc
 from core.nmpc.settings import AdmmSettings, CouplingSettings
 from core.plant.closed_loop import run_closed_loop

@@ -9,15 +9,15 @@ import threading
 import numpy as np
 import pytest
 
-from core.nmpc.admm_executor import (
+from core.admm.admm_executor import (
     AgentAdmm,
     LocalSolveRequest,
     LocalSolverSpec,
     consensus_step,
     run_agent_admm,
 )
-from core.nmpc.admm_mpc import DistributedMpc
-from core.nmpc.admm_peer_mpc import PeerDistributedMpc
+from core.admm.admm_mpc import DistributedMpc
+from core.admm.admm_peer_mpc import PeerDistributedMpc
 from core.nmpc.layout import shared_indices
 from core.nmpc.settings import ChannelSettings
 from tests.core.controller_fixtures import inputs_at_start, settings, team

@@ -4,7 +4,7 @@
 threads, and the NMPC thread with ``nmpc.runner: thread``) and of every live descendant: a
 child by the name multiprocessing gave it (``porter-sim-world``, ``porter-nmpc``,
 ``porter-admm-agent<i>``), a grandchild by its system name (``porter-admm<i>``, the ADMM
-workers of the NMPC process, ``deploy.runtime.process_names``). ``RunningCpu`` is a loop hook taking a
+workers of the NMPC process, ``deploy.compute.process_names``). ``RunningCpu`` is a loop hook taking a
 reading on the first tick of RUNNING and on the first tick after it, so the figures exclude
 start-up (imports, scene building, stand-up) and sit-down.
 """

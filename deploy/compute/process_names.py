@@ -4,7 +4,7 @@ A spawned process is called ``python3.11`` by the system whatever name multiproc
 it, and only its parent knows that name. ``name_this_process`` sets the Linux thread name of
 the calling process's main thread (``/proc/<pid>/comm``, 15 characters), so that every porter
 process is recognisable by its role, grandchildren included (the ADMM workers of the NMPC
-process); ``deploy.runtime.cpu_meter`` reads it back. Elsewhere it does nothing.
+process); ``deploy.compute.cpu_meter`` reads it back. Elsewhere it does nothing.
 """
 
 from __future__ import annotations

@@ -12,7 +12,7 @@ import casadi as ca
 import numpy as np
 import pytest
 
-from deploy.runtime.codegen_cache import CompilationError, CompiledCodeCache, default_cache_directory
+from deploy.compute.codegen_cache import CompilationError, CompiledCodeCache, default_cache_directory
 
 pytestmark = pytest.mark.skipif(shutil.which("gcc") is None, reason="needs gcc")
 

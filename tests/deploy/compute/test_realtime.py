@@ -11,7 +11,7 @@ import textwrap
 
 import pytest
 
-from deploy.runtime import realtime
+from deploy.compute import realtime
 
 # A child process losing the privilege (``drop()``, after its imports: nobody may not read
 # the interpreter's files): root becomes nobody; then no real-time priority is allowed at all
@@ -42,7 +42,7 @@ def test_nothing_changes_without_a_priority() -> None:
 def test_the_priority_holds_inside_and_the_old_policy_returns_after() -> None:
     result = _child(textwrap.dedent("""
         import os
-        from deploy.runtime import realtime
+        from deploy.compute import realtime
         problem = realtime.check(20)
         assert os.sched_getscheduler(0) == os.SCHED_OTHER  # the probe restores
         if problem is None:
@@ -67,7 +67,7 @@ def test_the_priority_holds_inside_and_the_old_policy_returns_after() -> None:
 def test_a_whole_process_goes_to_fifo_every_thread_or_says_why_not() -> None:
     """The sim world's priority: every thread of the process (a helper thread too), or the
     reason naming the setting; without the privilege, always the reason."""
-    imports = "import os, threading\nfrom deploy.runtime import realtime\n"
+    imports = "import os, threading\nfrom deploy.compute import realtime\n"
     code = textwrap.dedent("""
         stop = threading.Event()
         helper = threading.Thread(target=stop.wait)
@@ -98,7 +98,7 @@ def test_a_whole_process_goes_to_its_cpus_every_thread_or_says_why_not() -> None
     the process may not use is refused, naming the setting and the CPUs it may use."""
     code = textwrap.dedent("""
         import os, threading
-        from deploy.runtime import realtime
+        from deploy.compute import realtime
         cpu = max(os.sched_getaffinity(0))
         stop = threading.Event()
         helper = threading.Thread(target=stop.wait)
@@ -118,7 +118,7 @@ def test_a_whole_process_goes_to_its_cpus_every_thread_or_says_why_not() -> None
 def test_without_the_privilege_it_is_refused_naming_the_setting() -> None:
     result = _child(_UNPRIVILEGED + textwrap.dedent("""
         import os
-        from deploy.runtime import realtime
+        from deploy.compute import realtime
         drop()
         problem = realtime.check(50)
         assert problem is not None
@@ -138,7 +138,7 @@ def test_without_the_privilege_it_is_refused_naming_the_setting() -> None:
 def test_a_lower_nice_value_is_probed_and_refused_without_the_privilege() -> None:
     result = _child(_UNPRIVILEGED + textwrap.dedent("""
         import os
-        from deploy.runtime import realtime
+        from deploy.compute import realtime
         start = os.getpriority(os.PRIO_PROCESS, 0)
         allowed = realtime.check_nice(start - 5) is None
         assert os.getpriority(os.PRIO_PROCESS, 0) == start  # the probe restores
@@ -220,7 +220,7 @@ def test_cpus_this_process_may_not_use_are_refused_on_robots_and_left_in_simulat
 def test_the_loop_and_its_helper_threads_are_pinned_inside_and_free_after() -> None:
     result = _child(textwrap.dedent("""
         import os
-        from deploy.runtime import realtime
+        from deploy.compute import realtime
         before = os.sched_getaffinity(0)
         cpu = min(before)
         assert realtime.check_cpus([cpu], "rates.loop_cpu") is None

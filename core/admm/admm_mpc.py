@@ -13,7 +13,7 @@ and dual ||P (s_bar_{r+1} - s_bar_r)||. The wrench-only ablation is the same alg
 
 Two topologies, one controller protocol (``core.nmpc.team_mpc.TeamMpc``): ``DistributedMpc``
 coordinates the iterations here (its executor solves each round's local NLPs), and
-``core.nmpc.admm_peer_mpc.PeerDistributedMpc`` hands the whole update to agents that run the
+``core.admm.admm_peer_mpc.PeerDistributedMpc`` hands the whole update to agents that run the
 iterations among themselves. ``AdmmMpc`` holds what both share: the update's preparation, the
 warm start and the plan.
 """
@@ -26,10 +26,7 @@ from typing import Protocol
 
 import numpy as np
 
-from core.communication.lossy_channel import LossyChannel
-from core.model.srb_model import STATE_SIZE, WRENCH_SIZE
-from core.model.team import TeamModel
-from core.nmpc.admm_executor import (
+from core.admm.admm_executor import (
     AgentAdmm,
     LocalSolveExecutor,
     LocalSolveRequest,
@@ -38,6 +35,9 @@ from core.nmpc.admm_executor import (
     consensus_step,
     fallback_solution,
 )
+from core.communication.lossy_channel import LossyChannel
+from core.model.srb_model import STATE_SIZE, WRENCH_SIZE
+from core.model.team import TeamModel
 from core.nmpc.mpc_inputs import MpcInputs
 from core.nmpc.mpc_plan import AdmmIteration, MpcPlan, decode_plan
 from core.nmpc.nlp_solver import NlpCompiler, NlpSolution, SolveStats
