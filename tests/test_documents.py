@@ -20,12 +20,13 @@ HISTORY = [(r"\bstop \d+\b", "a stop number"), (r"\bissues? \d+\b", "an issue nu
 
 def _paths(text: str) -> list[str]:
     """Repository paths a document names: in backticks or links, starting at a top-level room
-    (placeholders such as ``<name>`` and globs are left out)."""
+    (placeholders such as ``<name>``, globs and paths outside the repository, such as the
+    shared paper beside it, are left out)."""
     found = re.findall(r"`([^`\s]+)`", text) + re.findall(r"\]\(([^)\s]+)\)", text)
     paths = []
     for item in found:
         item = item.split("#")[0].rstrip(".,:;")
-        if "<" in item or "*" in item or "://" in item:
+        if "<" in item or "*" in item or "://" in item or item.startswith("../"):
             continue
         if item.startswith(TOP_LEVEL) or item.endswith(".md"):
             paths.append(item)
