@@ -11,13 +11,13 @@ from the joint angles and speeds and the gyroscope, averaged over the feet in co
 (measured contact flags). The estimate is ``v_legs + c`` where the correction ``c`` follows
 ``v_mocap - v_legs`` through a first-order low-pass of time constant ``correction_time_s``:
 high frequencies from the legs, the mean from the MoCap. With no foot in contact the last
-odometry velocity is held. Pinocchio free-flyer conventions: quaternion xyzw in q[3:7], base
-angular velocity in the base frame in v[3:6].
+odometry velocity is held. The feet's velocities relative to the base come from Pinocchio in
+the base frame (its free-flyer at the identity, base angular velocity in v[3:6]); the base
+rotation (``rotation_from_quaternion_wxyz``) turns their mean into the world frame.
 """
 
 from __future__ import annotations
 
-import math
 from typing import Protocol
 
 import numpy as np
@@ -25,6 +25,7 @@ import pinocchio as pin
 
 from core.model.conventions import LEG_NAMES
 from core.model.robot_parameters import leg_joint_indices
+from core.model.rotations import rotation_from_quaternion_wxyz
 
 __all__ = ["BaseVelocityEstimator", "LegMeasurement"]
 
@@ -59,8 +60,10 @@ class BaseVelocityEstimator:
         self.correction = np.zeros(3)
         self.legs_velocity = np.zeros(3)
         self._last_time_s: float | None = None
-        # Pinocchio's (q, v), refilled in place each tick: the base position and linear velocity
-        # stay zero (they do not change a foot's velocity relative to the base)
+        # Pinocchio's (q, v) in the base frame, refilled in place each tick: the base pose stays
+        # the identity and its linear velocity zero (they do not change a foot's velocity
+        # relative to the base), so only the joints and the gyroscope enter; the robot's pose
+        # in world is the WBC's q alone (``core.locomotion.whole_body_control``)
         self._q = pin.neutral(self.model)
         self._v = np.zeros(self.model.nv)
 
@@ -70,20 +73,20 @@ class BaseVelocityEstimator:
         if not stance:
             return None
         q, v = self._q, self._v
-        w, x, y, z = measurement.quaternion_wxyz
-        q[3:7] = (x, y, z, w)
-        q[3:7] /= math.sqrt(w * w + x * x + y * y + z * z)  # np.linalg.norm: ~15 µs more, cold
         q[self.q_indices] = measurement.position_rad
         v[3:6] = measurement.angular_velocity_in_body_rad_s
         v[self.v_indices] = measurement.velocity_rad_s
         # the feet's velocities need the joints' placements and velocities only, not the
-        # frames' placements (getFrameVelocity composes them from the parent joint)
+        # frames' placements (getFrameVelocity composes them from the parent joint); with the
+        # base at the identity, "world aligned" is the base frame
         pin.forwardKinematics(self.model, self.data, q, v)
-        world = pin.ReferenceFrame.LOCAL_WORLD_ALIGNED
-        total = np.zeros(3)
+        aligned = pin.ReferenceFrame.LOCAL_WORLD_ALIGNED
+        total_in_base = np.zeros(3)
         for i in stance:
-            total += pin.getFrameVelocity(self.model, self.data, self.feet[i], world).linear
-        return total / -len(stance)
+            total_in_base += pin.getFrameVelocity(self.model, self.data, self.feet[i],
+                                                  aligned).linear
+        rotation = rotation_from_quaternion_wxyz(measurement.quaternion_wxyz)
+        return rotation @ total_in_base / -len(stance)
 
     def update(self, time_s: float, measurement: LegMeasurement,
                mocap_velocity_m_s: np.ndarray) -> np.ndarray:

@@ -4,5 +4,5 @@ No names are re-exported: import from the module that defines a name (its module
 listed in ``__all__``), so importing the package imports nothing else.
 """
 
-__all__ = ["buffered_function", "gait", "plan_tracking", "settings", "state_conversion",
-           "swing_targets", "swing_trajectory", "wbc_qp", "whole_body_control"]
+__all__ = ["buffered_function", "gait", "plan_tracking", "settings", "swing_trajectory",
+           "wbc_qp", "whole_body_control"]

@@ -4,7 +4,8 @@ Theta = (roll, pitch, yaw) with R = Rz(yaw) Ry(pitch) Rx(roll), body -> world; q
 (w, x, y, z). The ``*_rows`` / ``euler_angles`` formulas are plain arithmetic over their
 arguments, so the same code builds the NumPy values here and the CasADi expressions of the
 NMPC (``core.model.srb_model``) and of the WBC's state conversion
-(``core.locomotion.state_conversion``): one implementation, two backends, the same operations.
+(``core.locomotion.whole_body_control.StateConversion``): one implementation, two backends,
+the same operations.
 """
 
 from __future__ import annotations

@@ -37,8 +37,8 @@ from core.model.obstacles import Obstacle
 from core.nmpc.mpc_plan import MpcPlan
 from deploy.nmpc_runtime.nmpc_thread import NmpcResult
 from deploy.recording.loop_recording import LoopRecording
+from deploy.runtime.clock import PeriodStats
 from deploy.runtime.controller import NmpcDecision, TeamController
-from deploy.runtime.timing import PeriodStats
 from drivers.interfaces import MocapFrame, RobotMeasurement, WrenchSensors
 
 __all__ = ["Flags", "NmpcHooks", "NmpcRunner", "NmpcSchedule"]

@@ -27,14 +27,12 @@ from deploy.compute.gc_pauses import GcPauses
 from deploy.nmpc_runtime.nmpc_process import NmpcProcessError
 from deploy.nmpc_runtime.nmpc_schedule import NmpcSchedule
 from deploy.recording.loop_recording import LoopRecording
-from deploy.runtime.clock import LoopClock
+from deploy.runtime.clock import LoopClock, PeriodStats, TickStages
 from deploy.runtime.controller import TeamController, WbcStep
 from deploy.runtime.links import TeamLinks
 from deploy.runtime.loop_interfaces import Heartbeat, LoopHooks, LoopSettings
-from deploy.runtime.stale_state import StaleStateHold, link_notes
 from deploy.runtime.state_pipeline import StatePipeline
-from deploy.runtime.team_commands import TeamCommands
-from deploy.runtime.timing import PeriodStats, TickStages
+from deploy.runtime.team_commands import StaleStateHold, TeamCommands, link_notes
 from deploy.safety.checks import robot_limits
 from deploy.safety.posture import sitting_posture, standing_posture
 from deploy.safety.run_sequence import (

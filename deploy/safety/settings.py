@@ -50,7 +50,7 @@ class SupervisorSettings(StrictModel):
     stale_state_hold_ticks: int = Field(
         2, ge=1, le=50, description="from this many loop ticks in a row without a new state of "
                                     "a robot on, it gets its last fresh command again "
-                                    "(deploy.runtime.stale_state)")
+                                    "(deploy.runtime.team_commands)")
     stale_state_budget_s: float = Field(
         0.05, ge=0.004, le=1.0, description="a RUNNING robot whose state has not advanced for "
                                             "longer than this [s] trips: up to it the motors "

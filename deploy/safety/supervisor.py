@@ -111,7 +111,7 @@ class SafetyInputs:
     solver_failed: bool | None = None  # on ticks where an NMPC update finished
     deadline_missed: bool | None = None  # on ticks where an NMPC update finished
     loop_overrun: bool = False  # this tick started more than a loop period late
-    # robot -> time [s] its state has not advanced (``deploy.runtime.stale_state``; RUNNING)
+    # robot -> time [s] its state has not advanced (``deploy.runtime.team_commands``; RUNNING)
     stale_state_s: dict[str, float] = field(default_factory=dict)
     link_notes: dict[str, str] = field(default_factory=dict)  # robot -> its rejected messages
 

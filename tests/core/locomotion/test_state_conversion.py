@@ -9,8 +9,7 @@ from pathlib import Path
 import numpy as np
 import pytest
 
-from core.locomotion.state_conversion import StateConversion
-from core.locomotion.whole_body_control import FloatingBaseState, WholeBodyController
+from core.locomotion.whole_body_control import FloatingBaseState, StateConversion, WholeBodyController
 from core.model.rotations import cross3, euler_from_rotation
 from deploy.compute.codegen_cache import CompiledCodeCache
 from drivers.robot_descriptions import FOOT_RADIUS_M, load_pinocchio_model, standing_configuration

@@ -29,7 +29,7 @@ from deploy.config.files import ConfigError
 from deploy.config.scenario import load_scenario
 from deploy.recording.flight_recorder import RecorderSettings
 from deploy.recording.log_reader import LogFile
-from deploy.runtime.timing import Pacer, PeriodStats
+from deploy.runtime.clock import Pacer, PeriodStats
 from deploy.safety.posture import PostureMove, sitting_posture, standing_posture
 from drivers.interfaces import JointCommand
 from drivers.mujoco.scene import build_team_scene

@@ -295,3 +295,58 @@ def test_lockstep_a_stalled_state_resends_the_last_fresh_command() -> None:
         assert command.kp.any() and command.kd.any()
     # before the hold, the WBC's command on the repeated state is its own
     assert hold_after == 1 or not np.array_equal(window[0].torque_nm, fresh.torque_nm)
+
+
+# the simulated world and its scenario harness: on a robot, the drivers' own modules take their
+# place; the loop's call path is everything else porter runs in a tick
+WORLD_MODULES = ("drivers.mujoco.", "deploy.runtime.sim_run", "deploy.runtime.run_metrics")
+MAX_TICK_MODULES = 17  # measured: 17 (22 with the world's); the design target is 12
+
+
+def _modules_of_one_running_tick(monkeypatch: pytest.MonkeyPatch) -> set[str]:
+    """The porter modules whose functions run during one RUNNING tick without an NMPC update
+    (250 ticks in, 0.5 s: past the 0.3 s settling, the gait trots), by ``sys.setprofile``."""
+    import sys
+
+    from deploy.safety.supervisor import SafetyState
+    seen: set[str] = set()
+    original, ticks = ControlLoop._tick, [0]
+
+    def traced(loop: ControlLoop) -> bool:
+        ticks[0] += 1
+        if loop.supervisor.state != SafetyState.RUNNING or ticks[0] < 250 or seen:
+            return original(loop)
+        modules: set[str] = set()
+
+        def profile(frame: object, event: str, _: object) -> None:
+            if event == "call":
+                name = frame.f_globals.get("__name__", "")  # type: ignore[attr-defined]
+                if name.startswith(("core.", "deploy.", "drivers.")):
+                    modules.add(name)
+        updates = loop.nmpc.updates
+        sys.setprofile(profile)
+        try:
+            return original(loop)
+        finally:
+            sys.setprofile(None)
+            if loop.nmpc.updates == updates:  # a plain tick; else try the next one
+                seen.update(modules)
+    monkeypatch.setattr(ControlLoop, "_tick", traced)
+    run = SimRun(_scenario(0.6), CompiledCodeCache())
+    try:
+        run.run(verbose=False)
+    finally:
+        run.close()
+    return seen
+
+
+def test_a_running_tick_crosses_few_modules(monkeypatch: pytest.MonkeyPatch) -> None:
+    modules = _modules_of_one_running_tick(monkeypatch)
+    loop_path = sorted(m for m in modules if not m.startswith(WORLD_MODULES))
+    # what the tick must run: the check can see it
+    for needed in ("deploy.runtime.loop", "deploy.runtime.state_pipeline",
+                   "deploy.safety.supervisor", "core.locomotion.whole_body_control",
+                   "core.locomotion.gait"):
+        assert needed in loop_path, needed
+    assert any(m.startswith("drivers.mujoco.") for m in modules)  # the world was read
+    assert len(loop_path) <= MAX_TICK_MODULES, loop_path

@@ -7,7 +7,7 @@ import pytest
 
 from core.locomotion.whole_body_control import WbcOutput
 from deploy.runtime.controller import hybrid_command
-from deploy.runtime.stale_state import StaleStateHold, link_notes
+from deploy.runtime.team_commands import StaleStateHold, link_notes
 from drivers.interfaces import JointCommand, RobotMeasurement
 from drivers.link_errors import LinkMonitor
 
