@@ -80,13 +80,22 @@ class SerialExecutor:
 
 def consensus_step(received: np.ndarray, duals: np.ndarray, consensus: np.ndarray,
                    fresh: np.ndarray | None = None) -> tuple[np.ndarray, np.ndarray]:
-    """(s-bar, duals) after one ADMM iteration: s-bar = mean over the fresh agents of
-    (s^j + w^j), then w^j += s^j - s-bar for them; ``received`` and ``duals`` have one row
-    per agent; with no fresh agent both stay as they were."""
-    fresh = np.ones(received.shape[0], dtype=bool) if fresh is None else fresh
+    """(s-bar, duals) after one ADMM iteration; ``received`` and ``duals`` have one row per
+    agent.
+
+    Every agent fresh (the paper's update): s-bar = mean_j (s^j + w^j), then w^j += s^j -
+    s-bar, which leaves the duals summing to zero over the agents. Some agents fresh (a
+    gated channel, ``ChannelSettings.max_age_rounds``): s-bar = the mean of the fresh agents'
+    s^j, and only their duals move, w^j += s^j - s-bar; the moves sum to zero, so the duals'
+    sum stays what it was (zero), and a lone fresh agent keeps its dual instead of losing it.
+    (With the duals summing to zero, both forms give the same s-bar.) With no fresh agent both
+    stay as they were."""
+    if fresh is None or fresh.all():
+        new_consensus = np.mean(received + duals, axis=0)
+        return new_consensus, duals + received - new_consensus
     if not fresh.any():
         return consensus, duals
-    new_consensus = np.mean((received + duals)[fresh], axis=0)
+    new_consensus = np.mean(received[fresh], axis=0)
     new_duals = duals.copy()
     new_duals[fresh] = duals[fresh] + received[fresh] - new_consensus
     return new_consensus, new_duals

@@ -39,7 +39,9 @@ class CostSettings(StrictModel):
 
 
 class CouplingSettings(StrictModel):
-    """Yaw-free rigid coupling between each robot and the payload."""
+    """Yaw-free rigid coupling between each robot and the payload. ``enabled`` False removes
+    every coupling constraint of the NLP (the holonomic constraints and the yaw-torque
+    equality): the robots and the payload then interact through the wrenches alone."""
 
     enabled: bool = True
     yaw_torque: Literal["constrain", "penalize"] = "constrain"

@@ -331,7 +331,9 @@ def build_transport_problem(
                     kin, coupling.baumgarte, coupling.baumgarte_damping_ratio,
                     coupling.baumgarte_natural_frequency_rad_s,
                 ), 0.0, 0.0)
-        if coupling.yaw_torque == "constrain":
+        # the yaw-torque equality is the coupling's too (its yaw is free): without the
+        # coupling constraints (the paper's wrench-only ablation) it goes with them
+        if coupling.enabled and coupling.yaw_torque == "constrain":
             for j in range(na):
                 b.path(k, f"yaw_torque_{j}", yaw_torque(x_payload[k], wrench[j][k]), 0.0, 0.0)
         if k >= 1 and slots > 0:

@@ -12,7 +12,8 @@ PAPER_CLAIMS = ("table1", "delay", "iterations", "consensus", "experiments")
 def add_paper_parser(commands: argparse._SubParsersAction) -> None:
     paper = commands.add_parser(
         "paper", help="reproduce one of the paper's ablations beside its figures",
-        description="Run the variants of one of the paper's claims on the MuJoCo backend and "
+        description="Run the variants of one of the paper's claims (on the MuJoCo backend; "
+                    "table1 times the NLPs alone, without the simulation) and "
                     "print porter's figures beside the paper's; writes CLAIM.json and "
                     "CLAIM.png (the ablation figure's panels) into --out. Exit 0 when every "
                     "run was safe and reached its scenario's expected outcome, 1 when one "

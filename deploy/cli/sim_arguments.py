@@ -40,7 +40,9 @@ def add_sim_parser(commands: argparse._SubParsersAction,
     sim.add_argument("--rerun", nargs="?", const="spawn", metavar="TARGET",
                      help="live view: spawn (default), connect, URL or FILE.rrd")
     sim.add_argument("--channel-delay-rounds", type=int, metavar="D",
-                     help="ADMM messages up to D rounds late (hold-last)")
+                     help="ADMM messages up to D rounds late: the newest one that arrived "
+                     "is held, and left out of the consensus once older than the channel's "
+                     "max_age_rounds (2 by default; null in a scenario: pure hold-last)")
     sim.add_argument("--channel-drop", type=float, metavar="P",
                      help="ADMM messages dropped with probability P")
     sim.set_defaults(handler=handler)

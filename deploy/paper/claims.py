@@ -2,7 +2,7 @@
 
 Each claim is a set of variants of one scenario (two_go2 by default: the 2-agent transport)
 that differ only in the controller settings the claim is about, and the metrics the paper
-reports for it (Table III and the ablation figure of the paper).
+reports for it (Table II and the ablation figure of the paper).
 """
 
 from __future__ import annotations
@@ -11,7 +11,11 @@ from dataclasses import dataclass, field
 
 from core.nmpc.settings import ChannelSettings
 
-RESIDUALS = ("admm_residual_rms.payload_position_m", "admm_residual_rms.force_n")
+# The paper's Table II: "time-averaged RMS", the RMS over agents, stages and components of
+# each update's last-iteration primal residual (eq. 18), averaged over the updates. Porter's
+# summary also keeps the RMS over updates (``admm_residual_rms``), shown beside it.
+RESIDUALS = ("admm_residual_mean.payload_position_m", "admm_residual_mean.force_n")
+RMS_RESIDUALS = ("admm_residual_rms.payload_position_m", "admm_residual_rms.force_n")
 
 
 @dataclass(frozen=True)
@@ -39,7 +43,7 @@ _DELAYED = ChannelSettings(max_delay_rounds=20, drop_probability=0.5)
 CLAIMS = {claim.name: claim for claim in (
     Claim("delay", "communication delays (up to 20 rounds, p = 0.5 dropouts, hold-last) "
           "increase the consensus residuals, but transport stays stable",
-          RESIDUALS, ("position_residual_m", "force_residual_n"), (
+          (*RESIDUALS, *RMS_RESIDUALS), ("position_residual_m", "force_residual_n"), (
               Variant("nominal", paper={RESIDUALS[0]: 6.97e-5, RESIDUALS[1]: 7.40e-2}),
               Variant("delayed, hold-last (paper)",
                       {"channel": _DELAYED.model_copy(update={"max_age_rounds": None})},
@@ -50,7 +54,8 @@ CLAIMS = {claim.name: claim for claim in (
               Variant("delayed, fresh <= 2, over Zenoh agents", {"channel": _DELAYED},
                       executor="zenoh"))),
     Claim("iterations", "more ADMM iterations per update reduce the force residual; two "
-          "balance consensus and computation", (RESIDUALS[1],), ("force_residual_n",), tuple(
+          "balance consensus and computation", (RESIDUALS[1], RMS_RESIDUALS[1]),
+          ("force_residual_n",), tuple(
               Variant(f"{n} iteration{'s' if n > 1 else ''}", {"admm_iterations": n},
                       paper={RESIDUALS[1]: figure})
               for n, figure in ((1, 9.93e-2), (2, 7.70e-2), (3, 4.92e-2), (6, 2.62e-2)))),

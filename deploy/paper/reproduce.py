@@ -59,7 +59,8 @@ def run_claim(claim: Claim, scenario_name: str, duration_s: float | None,
 
 
 def format_rows(claim: Claim, rows: list[dict]) -> str:
-    short = {m: m.split(".")[-1] for m in claim.metrics}
+    prefix = {"admm_residual_mean": "avg ", "admm_residual_rms": "rms "}
+    short = {m: prefix.get(m.split(".")[0], "") + m.split(".")[-1] for m in claim.metrics}
     columns: list[Column | str] = ["variant"]
     for m in claim.metrics:
         columns += [Column(f"{short[m]} porter", "right"), Column("paper", "right")]
@@ -73,7 +74,6 @@ def format_rows(claim: Claim, rows: list[dict]) -> str:
         cells.append([row["variant"], *values, str(row["falls"]),
                       "yes" if row["reached_goal"] else "no", f"{row['min_h_m']:.3f}"])
     return f"porter paper {claim.name}: {claim.statement}\n" + render_table(columns, cells)
-
 
 
 def plot(claim: Claim, rows: list[dict], path: Path) -> None:

@@ -80,6 +80,25 @@ def test_consensus_step_is_the_papers_update() -> None:
     assert kept is duals
 
 
+def test_a_gated_round_keeps_the_duals_summing_to_zero() -> None:
+    rng = np.random.default_rng(3)
+    received = rng.normal(size=(3, 4))
+    duals = rng.normal(size=(3, 4))
+    duals -= duals.mean(axis=0)  # the invariant the paper's update keeps
+    for fresh in ([True, False, False], [True, True, False], [False, True, True]):
+        mask = np.array(fresh)
+        consensus, new_duals = consensus_step(received, duals, np.zeros(4), mask)
+        np.testing.assert_allclose(new_duals.sum(axis=0), 0.0, atol=1e-12)
+        np.testing.assert_allclose(consensus, received[mask].mean(axis=0))
+        np.testing.assert_array_equal(new_duals[~mask], duals[~mask])  # held agents wait
+    # a lone fresh agent keeps its dual (not reset to zero)
+    _, lone = consensus_step(received, duals, np.zeros(4), np.array([True, False, False]))
+    np.testing.assert_allclose(lone[0], duals[0])
+    # with every agent fresh, both forms agree on s-bar under the invariant
+    everyone, _ = consensus_step(received, duals, np.zeros(4), np.ones(3, dtype=bool))
+    np.testing.assert_allclose(everyone, received.mean(axis=0), atol=1e-12)
+
+
 def test_peers_reach_the_coordinators_consensus_on_identical_inputs() -> None:
     mpc, model = settings(), team()
     inputs = inputs_at_start(model, mpc)

@@ -10,7 +10,7 @@ from core.model.srb_model import GRF_SIZE, STATE_SIZE, WRENCH_SIZE
 from core.model.team import TeamModel
 from core.model.team_settings import AgentSettings, TeamSettings
 from core.nmpc.mpc_inputs import MpcInputs
-from core.nmpc.settings import MpcSettings, SafetySettings
+from core.nmpc.settings import CouplingSettings, MpcSettings, SafetySettings
 from core.nmpc.transport_problem import SLACK_BLOCK, TransportProblem, build_transport_problem
 from drivers.robot_descriptions import srb_parameters
 
@@ -240,3 +240,15 @@ def test_local_robot_feels_only_its_own_wrench() -> None:
         norms = [np.abs(np.array(jac)).max() for jac in wrench_jacobians(w, p)]
         assert norms[agent] > 1e-3
         assert all(norms[j] == 0.0 for j in range(agents) if j != agent)
+
+
+@pytest.mark.parametrize("local", [False, True])
+def test_without_the_coupling_no_coupling_constraint_is_left(local: bool) -> None:
+    def blocks(enabled: bool) -> set[str]:
+        settings = MpcSettings(safety=HARD, coupling=CouplingSettings(enabled=enabled))
+        problem = build_transport_problem(settings, agent_count=2, local=local)
+        return {name.split("@")[0] for name in problem.nlp.constraint_blocks}
+    coupled, free = blocks(True), blocks(False)
+    assert {"yaw_torque_0", "yaw_torque_1"} <= coupled
+    assert any(name.startswith("coupling_") for name in coupled)
+    assert not any(name.startswith(("coupling_", "yaw_torque_")) for name in free), free
