@@ -1,5 +1,6 @@
 """``porter paper experiments``: the paper's experiments as scenarios (2- and 3-agent
-transport, an unknown 12 kg payload with pushes, a moving obstacle, a narrow passage), run on
+transport, an unknown 12 kg payload with pushes, a moving obstacle, a narrow passage, and the
+4-agent team of its Table I), run on
 the MuJoCo backend and drawn as the paper's trajectory figures: xy paths of the payload and
 the robots among the obstacles and their safe sets."""
 
@@ -24,6 +25,7 @@ EXPERIMENTS = {
     "heavy_payload_pushes": "unknown 12 kg payload and pushes: safe and robust",
     "moving_obstacle": "a moving obstacle: avoided",
     "narrow_passage": "a narrow passage: passed safely",
+    "four_go2": "four Go2 (Table I's 4-agent team, simulated only in the paper): safe transport",
 }
 
 

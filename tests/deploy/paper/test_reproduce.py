@@ -94,6 +94,16 @@ def test_porter_paper_experiments_draws_the_paths_among_the_safe_sets(
     assert (tmp_path / "experiments.png").read_bytes().startswith(b"\x89PNG")
 
 
+def test_porter_paper_experiments_include_the_four_agent_team(
+        tmp_path: Path, capsys: pytest.CaptureFixture[str]) -> None:
+    assert main(["paper", "experiments", "--scenarios", "four_go2", "--duration", "0.3",
+                 "--out", str(tmp_path)]) == 0
+    assert "four Go2" in capsys.readouterr().out
+    row = json.loads((tmp_path / "experiments.json").read_text())["rows"][0]
+    assert row["scenario"] == "four_go2" and len(row["robots"]) == 4
+    assert len(row["paths_m"][0]) == 5  # payload and four robots per sample
+
+
 def test_experiments_refuse_unknown_scenarios(capsys: pytest.CaptureFixture[str]) -> None:
     assert main(["paper", "experiments", "--scenarios", "nowhere"]) == 2
     assert "unknown scenarios ['nowhere']" in capsys.readouterr().err
