@@ -107,3 +107,27 @@ def test_porter_paper_experiments_include_the_four_agent_team(
 def test_experiments_refuse_unknown_scenarios(capsys: pytest.CaptureFixture[str]) -> None:
     assert main(["paper", "experiments", "--scenarios", "nowhere"]) == 2
     assert "unknown scenarios ['nowhere']" in capsys.readouterr().err
+
+
+def test_porter_paper_iterations_prints_the_papers_aggregate_beside_the_rms(
+        tmp_path: Path, capsys: pytest.CaptureFixture[str]) -> None:
+    assert main(["paper", "iterations", "--duration", "0.3", "--out", str(tmp_path)]) == 0
+    printed = capsys.readouterr().out
+    assert "avg force_n porter" in printed and "rms force_n porter" in printed
+    rows = json.loads((tmp_path / "iterations.json").read_text())["rows"]
+    assert [r["variant"] for r in rows] == ["1 iteration", "2 iterations", "3 iterations",
+                                            "6 iterations"]
+    for row in rows:
+        metrics = row["metrics"]
+        assert 0 < metrics["admm_residual_mean.force_n"] <= metrics["admm_residual_rms.force_n"]
+        assert "admm_residual_mean.force_n" in row["paper"]  # the paper's figure is the mean
+
+
+def test_porter_paper_consensus_runs_the_wrench_only_ablation(
+        tmp_path: Path, capsys: pytest.CaptureFixture[str]) -> None:
+    assert main(["paper", "consensus", "--duration", "0.3", "--out", str(tmp_path)]) == 0
+    rows = json.loads((tmp_path / "consensus.json").read_text())["rows"]
+    assert len(rows) == 3 and all(r["falls"] == 0 for r in rows)
+    for row in rows:
+        assert math.isfinite(row["metrics"]["rms_payload_yaw_error_rad"])
+    assert (tmp_path / "consensus.png").read_bytes().startswith(b"\x89PNG")
