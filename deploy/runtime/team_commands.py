@@ -13,12 +13,13 @@ targets it integrated, and that is also the command the motors keep if the state
 because the robot's side stalled (the simulated world catching up, a firmware hiccup). A stall
 longer than ``safety.stale_state_budget_s`` (50 ms) is a fault of its own (``robot state
 stale``: the loop hands the supervisor each robot's stale time), and a silence longer than the
-robot's link budget (``link_timeout_s``) is a lost link as before.
+robot's link budget (``link_timeout_s``) is a lost link.
 
 Measured in lockstep (``porter sim two_go2``, every second one 18 ms window in which the
 motors keep the last command while the controller sees the old state): the fastest calf
-reached 26.2 rad/s with the former torque-plus-damping command (kp 0) and 15.7 rad/s with the
-hybrid command at kp 10 (13.5 rad/s without the windows). README, "Commands that fail soft".
+reached 26.2 rad/s with a torque-plus-damping command (kp 0) and 15.7 rad/s with the
+hybrid command at kp 10 (13.5 rad/s without the windows); deploy/README.md, "Commands
+that fail soft".
 """
 
 from __future__ import annotations
