@@ -83,7 +83,8 @@ class AdmmMpc:
         self.weights = self.problem.consensus_weights()
         self._updates = 0  # MPC updates so far (numbers the local-solve requests)
         self._payload_size = settings.horizon_steps * STATE_SIZE
-        self.channel: LossyChannel | None = None
+        self.channel: LossyChannel | None = None  # uplink: s^i to the consensus
+        self.downlink: LossyChannel | None = None  # s-bar - w^i to the agents
         self.executor: LocalSolveExecutor | PeerExecutor | None = None
         self.reset()
 
@@ -91,8 +92,9 @@ class AdmmMpc:
         self._previous: list[NlpSolution | None] = [None] * self.team.agent_count
         self._consensus: np.ndarray | None = None
         self._duals = np.zeros((self.team.agent_count, self.weights.size))
-        if self.channel is not None:
-            self.channel.reset()
+        for channel in (self.channel, self.downlink):
+            if channel is not None:
+                channel.reset()
 
     def close(self) -> None:
         """Stop the executor's workers or agents (if any)."""
@@ -216,7 +218,7 @@ class AdmmMpc:
 class DistributedMpc(AdmmMpc):
     """ADMM coordinated here: each round, ``executor`` solves every agent's local NLP
     (serially here by default), and this process forms s-bar and the duals, through the
-    emulated lossy channel where ``admm.channel`` sets one."""
+    emulated lossy channel where ``admm.channel`` sets one (both directions by default)."""
 
     def __init__(self, team: TeamModel, settings: MpcSettings,
                  executor: LocalSolveExecutor | None = None,
@@ -225,6 +227,9 @@ class DistributedMpc(AdmmMpc):
         channel = settings.admm.channel
         self.channel = (None if channel.perfect
                         else LossyChannel(channel, team.agent_count, self._shift_shared))
+        self.downlink = (None if channel.perfect or not channel.downlink
+                         else LossyChannel(channel, team.agent_count, self._shift_shared,
+                                           stream=1))
         self.executor = self.local = executor or SerialExecutor(
             LocalSolverSpec(settings, team.agent_count, compiler))
 
@@ -237,12 +242,17 @@ class DistributedMpc(AdmmMpc):
         solutions: list[NlpSolution] = []
         records: list[AdmmIteration] = []
         for iteration in range(iterations):
+            # The agents' targets s-bar - w^i, through the downlink where it is lossy: each
+            # agent solves with the newest target it holds (hold-last, as the paper's channel).
+            targets = consensus - duals
+            if self.downlink is not None:
+                targets, _ = self.downlink.exchange(targets, self._updates)
             requests = []
             for i in range(na):
                 warm = ((solutions[i].constraint_multipliers, solutions[i].bound_multipliers)
                         if solutions else begin.multipliers[i])
                 agent_parameters = begin.parameters[i].copy()
-                agent_parameters[target_slice] = consensus - duals[i]
+                agent_parameters[target_slice] = targets[i]
                 requests.append(LocalSolveRequest(
                     agent=i,
                     initial_guess=solutions[i].decision if solutions else begin.guesses[i],

@@ -1,12 +1,15 @@
-"""The agents' shared trajectories s^i on their way to the consensus, through a network that
-delays and drops messages (``ChannelSettings``), with hold-last at the receiver.
+"""ADMM messages through a network that delays and drops them (``ChannelSettings``), with
+hold-last at the receiver: one channel per direction, the agents' shared trajectories s^i on
+their way to the consensus (uplink) or the coordinator's targets s-bar - w^i on their way to
+the agents (downlink).
 
-Round r (one ADMM iteration) sends every agent's s^i. A message is dropped with probability p,
+Round r (one ADMM iteration) sends one message per agent. A message is dropped with probability p,
 else it arrives at round r + d, d drawn uniformly from 0..D. What the consensus uses for agent
 i at round r is the newest message (by sending round) that has arrived by then, shifted one
 stage per MPC update since it was sent (as a warm start is shifted): the paper's hold-last.
 The first round's messages always arrive at once (a team starts connected), so there is
-always a message to hold. The generator is seeded: the same run draws the same delays.
+always a message to hold. The generator is seeded: the same run draws the same delays;
+``stream`` gives each direction draws of its own.
 """
 
 from __future__ import annotations
@@ -32,15 +35,18 @@ class LossyChannel:
     """Delays, drops and holds agents' shared trajectories; ``exchange`` once per round."""
 
     def __init__(self, settings: ChannelSettings, agent_count: int,
-                 shift: Callable[[np.ndarray], np.ndarray]) -> None:
-        """``shift``: one stage earlier for a shared-trajectory vector (last stage repeated)."""
+                 shift: Callable[[np.ndarray], np.ndarray], stream: int = 0) -> None:
+        """``shift``: one stage earlier for a shared-trajectory vector (last stage repeated);
+        ``stream`` 0 (the uplink) draws from ``seed`` alone, another from (seed, stream)."""
         self.settings = settings
+        self.stream = stream
         self.agent_count = agent_count
         self._shift = shift
         self.reset()
 
     def reset(self) -> None:
-        self._rng = np.random.default_rng(self.settings.seed)
+        seed = self.settings.seed
+        self._rng = np.random.default_rng(seed if self.stream == 0 else [seed, self.stream])
         self._round = 0
         self._in_flight: list[_Message] = []
         self._held: list[_Message | None] = [None] * self.agent_count
@@ -48,7 +54,7 @@ class LossyChannel:
         self.dropped = 0
 
     def exchange(self, shared: np.ndarray, update: int) -> tuple[np.ndarray, np.ndarray]:
-        """What the consensus receives this round (rows per agent) from what the agents sent
+        """What the receivers hold this round (rows per agent) from what was sent
         (``shared``, rows per agent) during MPC update ``update``, and per agent whether it
         is fresh enough to use (``max_age_rounds``; always with hold-last only)."""
         s = self.settings

@@ -98,21 +98,25 @@ class ContactSettings(StrictModel):
 
 
 class ChannelSettings(StrictModel):
-    """The agents' messages to the consensus as a lossy network delivers them (the paper's
-    study: delays of up to 20 communication rounds, drop probability 0.5, hold-last).
+    """The ADMM messages as a lossy network delivers them (the paper's study: delays of up to
+    20 communication rounds, drop probability 0.5, hold-last, in both directions).
 
-    Each ADMM round an agent's shared trajectory s^i is dropped with ``drop_probability``
-    or arrives after a delay drawn uniformly from 0..``max_delay_rounds`` rounds (one round
-    = one ADMM iteration); the receiver holds the newest one that arrived, shifted one stage
-    per MPC update since it was sent. The default (0, 0) is a perfect network. ``seed``
-    makes a run repeatable. ``max_age_rounds`` (porter's, not the paper's): a held message
-    older than this is left out of the consensus and its agent's dual waits; None is the
-    paper's pure hold-last, which porter's team did not survive at D 20, p 0.5."""
+    Each ADMM round every message is dropped with ``drop_probability`` or arrives after a
+    delay drawn uniformly from 0..``max_delay_rounds`` rounds (one round = one ADMM
+    iteration); the receiver holds the newest one that arrived, shifted one stage per MPC
+    update since it was sent. The messages: uplink, each agent's shared trajectory s^i to
+    the consensus; downlink (``downlink``, the paper's bidirectional channel), the
+    coordinator's target s-bar - w^i to agent i, which solves with the newest target it
+    holds. The default (0, 0) is a perfect network. ``seed`` makes a run repeatable (the two
+    directions draw independently). ``max_age_rounds`` (porter's, not the paper's): an
+    uplink message held longer than this is left out of the consensus and its agent's dual
+    waits; None is the paper's pure hold-last. The downlink is always pure hold-last."""
 
     max_delay_rounds: int = Field(0, ge=0, le=1000)
     drop_probability: float = Field(0.0, ge=0.0, lt=1.0)
     seed: int = Field(0, ge=0)
     max_age_rounds: int | None = Field(2, ge=0)
+    downlink: bool = True
 
     @property
     def perfect(self) -> bool:

@@ -13,13 +13,19 @@ def add_paper_parser(commands: argparse._SubParsersAction) -> None:
     paper = commands.add_parser(
         "paper", help="reproduce one of the paper's ablations beside its figures",
         description="Run the variants of one of the paper's claims (on the MuJoCo backend; "
-                    "table1 times the NLPs alone, without the simulation) and "
-                    "print porter's figures beside the paper's; writes CLAIM.json and "
-                    "CLAIM.png (the ablation figure's panels) into --out. Exit 0 when every "
-                    "run was safe and reached its scenario's expected outcome, 1 when one "
-                    "did not.")
+                    "table1 times the NLPs alone, without the simulation) under each "
+                    "controller profile and print porter's figures beside the paper's; "
+                    "writes CLAIM.json and CLAIM.png (the ablation figure's panels) into "
+                    "--out. Exit 0 when every run was safe and reached its scenario's "
+                    "expected outcome, 1 when one did not.")
     paper.add_argument("claim", choices=PAPER_CLAIMS, help="which claim: "
                        + ", ".join(PAPER_CLAIMS))
+    paper.add_argument("--profile", nargs="+", default=None, metavar="PROFILE",
+                       help="controller profiles to run, each a row set: porter (porter's "
+                       "NLP, rti), paper (the paper's NLP, IPOPT to convergence) or a YAML "
+                       "file of MpcSettings (default: porter paper)")
+    paper.add_argument("--config", metavar="YAML", help="one more profile: a YAML file of "
+                       "MpcSettings fields (its rows are labelled by the file's name)")
     paper.add_argument("--scenario", default="two_go2",
                        help="shipped scenario the ablations run on (default two_go2)")
     paper.add_argument("--duration", type=float, help="seconds per run (default: the "
@@ -34,24 +40,35 @@ def add_paper_parser(commands: argparse._SubParsersAction) -> None:
 
 
 def _paper(args: argparse.Namespace) -> int:
+    import math
     from pathlib import Path
 
+    from deploy.config.profiles import DEFAULT_PROFILES, load_profile
     from deploy.paper.experiments import EXPERIMENTS, reproduce_experiments
     from deploy.paper.reproduce import reproduce
     from deploy.paper.table1 import reproduce_table1
 
     output = Output(args)
-    if args.duration is not None and not args.duration > 0:
-        return error(f"paper --duration must be positive, got {args.duration}")
+    if args.duration is not None and not (math.isfinite(args.duration) and args.duration > 0):
+        return error(f"paper --duration must be positive and finite, got {args.duration}")
+    names = list(args.profile or ([] if args.config else DEFAULT_PROFILES))
+    if args.config:
+        names.append(args.config)
+    profiles = [load_profile(name) for name in names]  # a bad file is a ConfigError (exit 2)
+    labels = [label for label, _ in profiles]
+    if len(set(labels)) != len(labels):
+        return error(f"paper --profile: each profile once, got {labels}")
     if args.claim == "table1":
         if not all(2 <= n <= 8 for n in args.agents):
             return error(f"paper --agents must be in [2, 8], got {args.agents}")
-        return reproduce_table1(args.agents, args.duration or 3.0, Path(args.out), output)
+        return reproduce_table1(args.agents, args.duration or 3.0, Path(args.out), output,
+                                profiles)
     if args.claim == "experiments":
         unknown = sorted(set(args.scenarios or []) - set(EXPERIMENTS))
         if unknown:
             return error(f"paper experiments: unknown scenarios {unknown}; choose from "
                          f"{sorted(EXPERIMENTS)}")
         return reproduce_experiments(args.scenarios or list(EXPERIMENTS), args.duration,
-                                     Path(args.out), output)
-    return reproduce(args.claim, args.scenario, args.duration, Path(args.out), output)
+                                     Path(args.out), output, profiles)
+    return reproduce(args.claim, args.scenario, args.duration, Path(args.out), output,
+                     profiles)

@@ -52,11 +52,12 @@ def count(text: str) -> int:
 
 
 def mpc_settings(args: argparse.Namespace) -> MpcSettings:
-    """``MpcSettings`` from ``--config`` (YAML overrides of the paper defaults) or defaults."""
+    """``MpcSettings`` from ``--config`` (YAML overrides of the defaults, or a shipped
+    profile's name: ``paper``, ``porter``) or the defaults."""
     from core.nmpc.settings import MpcSettings
-    from deploy.config.files import load_settings
+    from deploy.config.profiles import load_profile
 
-    return load_settings(args.config, MpcSettings) if args.config else MpcSettings()
+    return load_profile(args.config)[1] if args.config else MpcSettings()
 
 
 def _sim(args: argparse.Namespace) -> int:

@@ -20,7 +20,9 @@ def add_sim_parser(commands: argparse._SubParsersAction,
         "not, 130 when stopped.")
     sim.add_argument("scenario", nargs="?", default="two_go2",
                      help="shipped name or YAML path (default two_go2)")
-    sim.add_argument("--config", metavar="YAML", help="MpcSettings fields to override")
+    sim.add_argument("--config", metavar="YAML",
+                     help="MpcSettings fields to override, or a shipped profile: paper "
+                     "(the paper's NLP, IPOPT to convergence), porter (the defaults)")
     sim.add_argument("--duration", type=positive_number, metavar="S",
                      help="instead of the scenario's duration_s")
     sim.add_argument("--seed", type=int, help="instead of the scenario's seed")

@@ -4,4 +4,4 @@ No names are re-exported: import from the module that defines a name (its module
 listed in ``__all__``), so importing the package imports nothing else.
 """
 
-__all__ = ["deploy_config", "files", "scenario", "sim_faults"]
+__all__ = ["deploy_config", "files", "profiles", "scenario", "sim_faults"]

@@ -1,8 +1,8 @@
 """``porter paper experiments``: the paper's experiments as scenarios (2- and 3-agent
 transport, an unknown 12 kg payload with pushes, a moving obstacle, a narrow passage, and the
 4-agent team of its Table I), run on
-the MuJoCo backend and drawn as the paper's trajectory figures: xy paths of the payload and
-the robots among the obstacles and their safe sets."""
+the MuJoCo backend under each controller profile and drawn as the paper's trajectory figures:
+xy paths of the payload and the robots among the obstacles and their safe sets."""
 
 from __future__ import annotations
 
@@ -15,6 +15,7 @@ from core.nmpc.settings import MpcSettings
 from deploy.cli.conventions import DIFFERS, OK, Output
 from deploy.compute.codegen_cache import CompiledCodeCache
 from deploy.config.scenario import load_scenario
+from deploy.paper.reproduce import Profile, profile_documents, shortened_scenario
 from deploy.reports.table import Column, render_table
 from deploy.runtime.sim_run import SimRun
 
@@ -29,14 +30,13 @@ EXPERIMENTS = {
 }
 
 
-def run_experiment(name: str, duration_s: float | None, cache: CompiledCodeCache) -> dict:
-    scenario = load_scenario(name)
-    if duration_s is not None:
-        scenario = scenario.model_copy(update={"duration_s": min(duration_s,
-                                                                 scenario.duration_s)})
+def run_experiment(name: str, duration_s: float | None, cache: CompiledCodeCache,
+                   profile: Profile | None = None) -> dict:
+    profile = profile or ("porter", MpcSettings())
+    scenario = shortened_scenario(name, duration_s)
     scenario = scenario.model_copy(update={"controller": scenario.controller.model_copy(
         update={"executor": "serial"})})
-    run = SimRun(scenario, cache, MpcSettings())
+    run = SimRun(scenario, cache, profile[1])
     try:
         summary = run.run()
     finally:
@@ -50,7 +50,8 @@ def run_experiment(name: str, duration_s: float | None, cache: CompiledCodeCache
     shortened = duration_s is not None and duration_s < load_scenario(name).duration_s
     as_expected = summary["falls"] == 0 and (summary["outcome"] == summary["expected_outcome"]
                                              or (shortened and summary["outcome"] == "time out"))
-    return {"scenario": name, "paper": EXPERIMENTS[name], "falls": summary["falls"],
+    return {"scenario": name, "profile": profile[0], "paper": EXPERIMENTS[name],
+            "falls": summary["falls"],
             "outcome": summary["outcome"], "as_expected": as_expected,
             "reached_goal": summary["reached_goal"], "min_h_m": summary["min_h_m"],
             "rms_payload_position_error_m": summary["rms_payload_position_error_m"],
@@ -65,8 +66,12 @@ def plot_experiments(rows: list[dict], path: Path) -> None:
     matplotlib.use("Agg")  # files only, no display
     import matplotlib.pyplot as plt
 
-    figure, axes = plt.subplots(1, len(rows), figsize=(5 * len(rows), 4.5), squeeze=False)
-    for axis, row in zip(axes[0], rows, strict=True):
+    profiles = list(dict.fromkeys(row["profile"] for row in rows))
+    columns = len(rows) // len(profiles)
+    figure, axes = plt.subplots(len(profiles), columns, figsize=(5 * columns,
+                                                                 4.5 * len(profiles)),
+                                squeeze=False)
+    for axis, row in zip(axes.reshape(-1), rows, strict=True):
         paths = np.asarray(row["paths_m"])
         for o in row["obstacles"]:
             start, end = np.asarray(o["start_m"]), np.asarray(o["end_m"])
@@ -83,8 +88,8 @@ def plot_experiments(rows: list[dict], path: Path) -> None:
             axis.plot(paths[:, i, 0], paths[:, i, 1], linewidth=1, label=robot)
         axis.plot(*row["goal_m"], marker="*", markersize=12, color="tab:green", label="goal")
         axis.set_aspect("equal")
-        axis.set_title(f"{row['scenario']}: min h {row['min_h_m']:.3f} m, falls {row['falls']}",
-                       fontsize=9)
+        axis.set_title(f"{row['scenario']} ({row['profile']}): min h {row['min_h_m']:.3f} m, "
+                       f"falls {row['falls']}", fontsize=9)
         axis.set_xlabel("x [m]")
         axis.set_ylabel("y [m]")
         axis.grid(True, alpha=0.3)
@@ -95,10 +100,11 @@ def plot_experiments(rows: list[dict], path: Path) -> None:
 
 
 def format_experiments(rows: list[dict]) -> str:
-    cells = [[r["scenario"], "yes" if r["reached_goal"] else "no", str(r["falls"]),
+    cells = [[r["scenario"], r["profile"], "yes" if r["reached_goal"] else "no",
+              str(r["falls"]),
               f"{r['min_h_m']:.3f}", f"{r['rms_payload_position_error_m']:.3f}", r["paper"]]
              for r in rows]
-    table = render_table(["scenario", "goal", Column("falls", "right"),
+    table = render_table(["scenario", "profile", "goal", Column("falls", "right"),
                           Column("min h m", "right"), Column("rms pos m", "right"),
                           "the paper shows"], cells)
     return "porter paper experiments: the paper's experiments as MuJoCo scenarios\n" + table
@@ -106,15 +112,16 @@ def format_experiments(rows: list[dict]) -> str:
 
 
 def reproduce_experiments(names: list[str], duration_s: float | None, out: Path,
-                          output: Output) -> int:
+                          output: Output, profiles: list[Profile]) -> int:
     """Exit ``OK`` when every experiment ran without a fall to its scenario's expected
-    outcome (a shortened run need not arrive), else ``DIFFERS``."""
+    outcome (a shortened run need not arrive) under every profile, else ``DIFFERS``."""
     cache = CompiledCodeCache()
-    rows = [run_experiment(name, duration_s, cache) for name in names]
+    rows = [run_experiment(name, duration_s, cache, profile)
+            for profile in profiles for name in names]
     output.report(format_experiments(rows))
     out.mkdir(parents=True, exist_ok=True)
     plot_experiments(rows, out / "experiments.png")
-    document = {"claim": "experiments", "rows": rows}
+    document = {"claim": "experiments", "profiles": profile_documents(profiles), "rows": rows}
     (out / "experiments.json").write_text(json.dumps(document) + "\n")
     output.progress(f"wrote {out / 'experiments.json'} and {out / 'experiments.png'}")
     output.write_json(document)

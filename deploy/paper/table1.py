@@ -1,6 +1,7 @@
 """``porter paper table1``: the paper's Table I, distributed vs centralized NLP solve time for
-2, 3 and 4 agents, with the paper's IPOPT configuration for both and porter's default
-solver beside it (closed loop on the SRB plant, ``deploy.bench.nmpc``)."""
+2, 3 and 4 agents, under each controller profile: the paper's (its NLP, IPOPT to
+convergence) and porter's (its NLP, rti), in closed loop on the SRB plant
+(``deploy.bench.nmpc``)."""
 
 from __future__ import annotations
 
@@ -10,6 +11,7 @@ from typing import Any
 
 from deploy.bench.nmpc import BenchRow, run_bench
 from deploy.cli.conventions import OK, Output
+from deploy.paper.reproduce import Profile, profile_documents
 from deploy.reports.table import Column, render_table
 
 # Table I of the paper: decision variables (dist., cent.), IPOPT iterations, distributed and
@@ -29,17 +31,20 @@ def nlp_ms(row: BenchRow) -> dict[str, float]:
     return row.local_ms if row.local_ms is not None else row.update_ms
 
 
-def table1_rows(rows: list[BenchRow]) -> list[dict]:
-    """Per team size and solver: both modes' NLP time and the distributed reduction."""
+def table1_rows(runs: list[tuple[str, list[BenchRow]]]) -> list[dict]:
+    """Per team size and profile (label, its bench rows): both modes' NLP time and the
+    distributed reduction."""
     out = []
-    for agents in sorted({r.agents for r in rows}):
-        for solver in ("ipopt-reference", "rti"):
-            pair = {r.mode: r for r in rows if r.agents == agents and r.solver == solver}
+    agent_counts = sorted({r.agents for _, rows in runs for r in rows})
+    for agents in agent_counts:
+        for label, rows in runs:
+            pair = {r.mode: r for r in rows if r.agents == agents}
             if set(pair) != {"distributed", "centralized"}:
                 continue
+            solver = pair["distributed"].solver
             dist, cent = nlp_ms(pair["distributed"]), nlp_ms(pair["centralized"])
             paper = PAPER_TABLE1.get(agents)
-            row: dict[str, Any] = {"agents": agents, "solver": solver,
+            row: dict[str, Any] = {"agents": agents, "profile": label, "solver": solver,
                    "variables": (pair["distributed"].variables, pair["centralized"].variables),
                    "distributed_ms": (dist["mean"], dist["std"]),
                    "centralized_ms": (cent["mean"], cent["std"]),
@@ -52,7 +57,7 @@ def table1_rows(rows: list[BenchRow]) -> list[dict]:
                                     / pair["centralized"].update_ms["mean"]),
                    "iterations": (pair["distributed"].iterations_mean,
                                   pair["centralized"].iterations_mean)}
-            if paper is not None and solver == "ipopt-reference":
+            if paper is not None:
                 row["paper"] = {**paper, "reduction": 1.0 - paper["distributed"][0]
                                 / paper["centralized"][0]}
             out.append(row)
@@ -64,14 +69,15 @@ def format_table1(rows: list[dict]) -> str:
     for r in rows:
         paper = r.get("paper")
         cells.append([
-            str(r["agents"]), r["solver"], f"{r['variables'][0]}/{r['variables'][1]}",
+            str(r["agents"]), r["profile"], r["solver"],
+            f"{r['variables'][0]}/{r['variables'][1]}",
             f"{r['iterations'][0]:.1f}/{r['iterations'][1]:.1f}",
             f"{r['distributed_ms'][0]:.2f} ±{r['distributed_ms'][1]:.1f}",
             f"{r['centralized_ms'][0]:.2f} ±{r['centralized_ms'][1]:.1f}",
             f"{r['reduction']:+.0%}", f"{r['update_ratio']:.2f}",
             f"{paper['distributed'][0]:.2f} / {paper['centralized'][0]:.2f}, "
             f"{paper['reduction']:+.0%}" if paper else ""])
-    columns: list[Column | str] = [Column("n", "right"), "solver",
+    columns: list[Column | str] = [Column("n", "right"), "profile", "solver",
                *(Column(name, "right") for name in ("vars d/c", "iters d/c", "dist ms",
                                                     "cent ms", "reduction",
                                                     "update d/c")),
@@ -84,15 +90,19 @@ def format_table1(rows: list[dict]) -> str:
                 "a whole centralized one"]))
 
 
-def reproduce_table1(agent_counts: list[int], duration_s: float, out: Path, output: Output
-                     ) -> int:
-    rows, _, _ = run_bench(agent_counts, ["rti"], duration_s, parallel=True,
-                           include_reference=True,
-                           reference_modes=("centralized", "distributed"), with_checks=False)
-    table = table1_rows(rows)
+def reproduce_table1(agent_counts: list[int], duration_s: float, out: Path, output: Output,
+                     profiles: list[Profile]) -> int:
+    runs = []
+    for label, settings in profiles:
+        rows, _, _ = run_bench(agent_counts, [settings.solver.name], duration_s,
+                               parallel=True, include_reference=False,
+                               base_settings=settings, with_checks=False)
+        runs.append((label, rows))
+    table = table1_rows(runs)
     output.report(format_table1(table))
     out.mkdir(parents=True, exist_ok=True)
-    document = {"claim": "table1", "rows": table, "bench_rows": [r.as_dict() for r in rows]}
+    document = {"claim": "table1", "profiles": profile_documents(profiles), "rows": table,
+                "bench_rows": {label: [r.as_dict() for r in rows] for label, rows in runs}}
     (out / "table1.json").write_text(json.dumps(document, indent=2) + "\n")
     output.progress(f"wrote {out / 'table1.json'}")
     output.write_json(document)

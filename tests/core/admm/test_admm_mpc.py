@@ -1,14 +1,16 @@
-"""ADMM distributed NMPC: equivalence with centralized, residual decay, wrench-only variant."""
+"""ADMM distributed NMPC: equivalence with centralized, residual decay, wrench-only variant,
+the bidirectional lossy channel."""
 
 from __future__ import annotations
 
 import numpy as np
 import pytest
 
+from core.admm.admm_executor import LocalSolveRequest, LocalSolverSpec, SerialExecutor
 from core.admm.admm_mpc import DistributedMpc
 from core.model.obstacles import Obstacle
 from core.nmpc.centralized_mpc import CentralizedMpc
-from core.nmpc.settings import AdmmSettings, CouplingSettings
+from core.nmpc.settings import AdmmSettings, ChannelSettings, CouplingSettings
 from core.plant.closed_loop import run_closed_loop
 from tests.core.controller_fixtures import (
     INTERPRETED,
@@ -118,3 +120,52 @@ def test_wrench_only_variant_runs(rho_state: float) -> None:
     assert all(np.isfinite(result.update_time_s))
     assert result.final_payload_state is not None
     assert np.all(np.isfinite(result.final_payload_state))
+
+
+class _RecordingExecutor:
+    """Solves serially and keeps every request's consensus target (what each agent used)."""
+
+    def __init__(self, spec: LocalSolverSpec) -> None:
+        self.serial = SerialExecutor(spec)
+        self.targets: list[list[np.ndarray]] = []
+        self.slice = spec.build().problem.parameters.slice("consensus_target")
+
+    def solve_all(self, requests: list[LocalSolveRequest]) -> list:
+        self.targets.append([r.parameters[self.slice].copy() for r in requests])
+        return self.serial.solve_all(requests)
+
+    def close(self) -> None:
+        pass
+
+
+def test_the_bidirectional_channel_holds_targets_and_keeps_the_duals_summing_to_zero() -> None:
+    """The paper's channel: the coordinator's targets s-bar - w^i reach the agents through a
+    delaying, dropping downlink, held last; with pure hold-last on the uplink too, the duals
+    still sum to zero over the agents after every update."""
+    channel = ChannelSettings(max_delay_rounds=4, drop_probability=0.5, max_age_rounds=None,
+                              seed=2)
+    mpc = settings(admm=AdmmSettings(channel=channel))
+    model = team()
+    executor = _RecordingExecutor(LocalSolverSpec(mpc, model.agent_count))
+    distributed = DistributedMpc(model, mpc, executor=executor)
+    assert distributed.downlink is not None and distributed.channel is not None
+    inputs = inputs_at_start(model, mpc)
+    stale = 0
+    for _ in range(6):
+        before = len(executor.targets)
+        consensus, duals = distributed._consensus, distributed._duals
+        plan = distributed.update(inputs)
+        assert plan.success
+        np.testing.assert_allclose(distributed._duals.sum(axis=0), 0.0, atol=1e-6)
+        if consensus is not None:
+            # the first round's true targets, from the previous update's s-bar and duals
+            shifted = distributed._shift_shared(consensus) - np.array(
+                [distributed._shift_shared(w) for w in duals])
+            used = np.array(executor.targets[before])
+            stale += int(np.sum(np.any(np.abs(used - shifted) > 1e-9, axis=1)))
+    assert stale > 0  # some agents solved with a held, older target
+    assert distributed.downlink.dropped > 0
+    # without the downlink, every agent solves with the coordinator's target of the moment
+    uplink_only = DistributedMpc(model, mpc.model_copy(update={"admm": AdmmSettings(
+        channel=channel.model_copy(update={"downlink": False}))}))
+    assert uplink_only.downlink is None and uplink_only.channel is not None

@@ -79,3 +79,18 @@ def test_the_freshness_gate_marks_messages_older_than_max_age() -> None:
 def test_a_perfect_channel_is_the_default() -> None:
     assert ChannelSettings().perfect
     assert not ChannelSettings(drop_probability=0.1).perfect
+
+
+def test_each_direction_draws_its_own_seeded_stream() -> None:
+    settings = ChannelSettings(max_delay_rounds=5, drop_probability=0.4, seed=7)
+
+    def drops(stream: int) -> list[int]:
+        channel = LossyChannel(settings, AGENTS, shift=lambda shared: shared, stream=stream)
+        counts = []
+        for r in range(200):
+            channel.exchange(np.full((AGENTS, 1), float(r)), 0)
+            counts.append(channel.dropped)
+        return counts
+
+    assert drops(1) == drops(1)  # repeatable
+    assert drops(1) != drops(0)  # the downlink does not mirror the uplink's draws
