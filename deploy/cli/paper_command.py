@@ -34,7 +34,7 @@ def add_paper_parser(commands: argparse._SubParsersAction) -> None:
     paper.add_argument("--agents", type=int, nargs="+", default=[2, 3, 4],
                        help="team sizes (table1)")
     paper.add_argument("--scenarios", nargs="+", help="experiments: these scenarios only "
-                       "(default: all six)")
+                       "(default: all seven)")
     add_output_options(paper, "the claim's document (as CLAIM.json)")
     paper.set_defaults(handler=_paper)
 

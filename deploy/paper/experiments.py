@@ -1,6 +1,6 @@
 """``porter paper experiments``: the paper's experiments as scenarios (2- and 3-agent
-transport, an unknown 12 kg payload with pushes, a moving obstacle, a narrow passage, and the
-4-agent team of its Table I), run on
+transport, an unknown 12 kg payload with pushes, three agents with pushes, a moving obstacle,
+a narrow passage, and the 4-agent team of its Table I), run on
 the MuJoCo backend under each controller profile and drawn as the paper's trajectory figures:
 xy paths of the payload and the robots among the obstacles and their safe sets."""
 
@@ -24,6 +24,7 @@ EXPERIMENTS = {
     "two_go2": "two Go2, 5 kg payload, 7 obstacles: safe transport (h >= 0)",
     "mixed_three": "two Go2 + one A1, 5 kg payload: safe transport",
     "heavy_payload_pushes": "unknown 12 kg payload and pushes: safe and robust",
+    "mixed_three_pushes": "three agents, 5 kg payload, pushes: brief violations, rapid recovery",
     "moving_obstacle": "a moving obstacle: avoided",
     "narrow_passage": "a narrow passage: passed safely",
     "four_go2": "four Go2 (Table I's 4-agent team, simulated only in the paper): safe transport",

@@ -27,6 +27,7 @@ from deploy.config.scenario import (
 )
 
 SHIPPED = ["crossing_heavy", "four_go2", "heavy_payload_pushes", "mixed_three",
+           "mixed_three_pushes",
            "moving_obstacle", "narrow_passage", "obstacle_on_line", "two_go2"]
 # The paper's scenarios; the others are the hardest cases of `porter bench obstacles` that end
 # safely (crossing_heavy at the goal, obstacle_on_line in a controlled stop).
