@@ -6,7 +6,7 @@ import argparse
 
 from deploy.cli.conventions import Output, add_output_options, error
 
-PAPER_CLAIMS = ("table1", "delay", "iterations", "consensus", "experiments")
+PAPER_CLAIMS = ("table1", "delay", "iterations", "consensus", "experiments", "closed-loop")
 
 
 def add_paper_parser(commands: argparse._SubParsersAction) -> None:
@@ -34,7 +34,8 @@ def add_paper_parser(commands: argparse._SubParsersAction) -> None:
     paper.add_argument("--agents", type=int, nargs="+", default=[2, 3, 4],
                        help="team sizes (table1)")
     paper.add_argument("--scenarios", nargs="+", help="experiments: these scenarios only "
-                       "(default: all seven)")
+                       "(default: all seven); closed-loop: these shipped scenarios (default: "
+                       "two_go2 mixed_three four_go2)")
     add_output_options(paper, "the claim's document (as CLAIM.json)")
     paper.set_defaults(handler=_paper)
 
@@ -44,6 +45,8 @@ def _paper(args: argparse.Namespace) -> int:
     from pathlib import Path
 
     from deploy.config.profiles import DEFAULT_PROFILES, load_profile
+    from deploy.config.scenario import shipped_scenarios
+    from deploy.paper.closed_loop import DEFAULT_SCENARIOS, reproduce_closed_loop
     from deploy.paper.experiments import EXPERIMENTS, reproduce_experiments
     from deploy.paper.reproduce import reproduce
     from deploy.paper.table1 import reproduce_table1
@@ -69,6 +72,13 @@ def _paper(args: argparse.Namespace) -> int:
             return error(f"paper experiments: unknown scenarios {unknown}; choose from "
                          f"{sorted(EXPERIMENTS)}")
         return reproduce_experiments(args.scenarios or list(EXPERIMENTS), args.duration,
+                                     Path(args.out), output, profiles)
+    if args.claim == "closed-loop":
+        unknown = sorted(set(args.scenarios or []) - set(shipped_scenarios()))
+        if unknown:
+            return error(f"paper closed-loop: unknown scenarios {unknown}; choose from "
+                         f"{shipped_scenarios()}")
+        return reproduce_closed_loop(args.scenarios or list(DEFAULT_SCENARIOS), args.duration,
                                      Path(args.out), output, profiles)
     return reproduce(args.claim, args.scenario, args.duration, Path(args.out), output,
                      profiles)

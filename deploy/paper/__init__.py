@@ -5,4 +5,4 @@ No names are re-exported: import from the module that defines a name (its module
 listed in ``__all__``), so importing the package imports nothing else.
 """
 
-__all__ = ["claims", "experiments", "reproduce", "table1"]
+__all__ = ["claims", "closed_loop", "experiments", "reproduce", "table1"]

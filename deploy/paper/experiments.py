@@ -58,7 +58,61 @@ def run_experiment(name: str, duration_s: float | None, cache: CompiledCodeCache
             "rms_payload_position_error_m": summary["rms_payload_position_error_m"],
             "duration_s": summary["duration_s"], "robots": [r.name for r in run.control.robots],
             "goal_m": run.metrics.goal_m[0:2].tolist(), "obstacles": obstacles,
-            "paths_m": paths[:: max(1, len(paths) // 2000)].tolist()}
+            "paths_m": paths[:: max(1, len(paths) // 2000)].tolist(),
+            "series": series(run)}
+
+
+def series(run: SimRun) -> dict:
+    """The paper's experiment panels over time: min h [m] (ground truth), each robot's
+    planned vertical GRF sum [N] and the ADMM residuals of each update's last iteration."""
+    m = run.metrics
+    step = max(1, len(m.min_h_m) // 2000)
+    grf_z = (np.array([grf.reshape(len(grf), 4, 3)[:, :, 2].sum(axis=1) for grf in m.grf_n])
+             if m.grf_n else np.zeros((0, 0)))
+    return {"sample_time_s": np.linspace(0.0, m.duration_s, len(m.min_h_m))[::step].tolist(),
+            "min_h_m": m.min_h_m[::step],
+            "update_time_s": np.linspace(0.0, m.duration_s, len(m.grf_n)).tolist(),
+            "grf_z_sum_n": grf_z.tolist(), "force_residual_n": list(m.force_residual_n),
+            "position_residual_m": list(m.position_residual_m),
+            "dual_residual": list(m.dual_residual)}
+
+
+def plot_series(rows: list[dict], path: Path) -> None:
+    """One row of panels per experiment: min h, planned GRF sums, ADMM residuals."""
+    import matplotlib
+
+    matplotlib.use("Agg")  # files only, no display
+    import matplotlib.pyplot as plt
+
+    figure, axes = plt.subplots(len(rows), 3, figsize=(15, 2.6 * len(rows)), squeeze=False)
+    for (h_axis, grf_axis, residual_axis), row in zip(axes, rows, strict=True):
+        s = row["series"]
+        title = f"{row['scenario']} ({row['profile']})"
+        h_axis.plot(s["sample_time_s"], s["min_h_m"], linewidth=1.0)
+        h_axis.axhline(0.0, color="tab:red", linewidth=0.8, linestyle="--")
+        h_axis.set_ylabel("min h [m]")
+        grf = np.asarray(s["grf_z_sum_n"])
+        for i, robot in enumerate(row["robots"]):
+            if grf.size:
+                grf_axis.plot(s["update_time_s"], grf[:, i], linewidth=0.8, label=robot)
+        grf_axis.set_ylabel("planned GRF z sum [N]")
+        grf_axis.legend(fontsize=7)
+        updates = np.asarray(s["update_time_s"])
+        for name, label in (("force_residual_n", "force [N]"),
+                            ("position_residual_m", "position [m]"), ("dual_residual", "dual")):
+            values = np.asarray(s[name])
+            if values.size:
+                residual_axis.semilogy(updates[-len(values):], np.maximum(values, 1e-12),
+                                       linewidth=0.8, label=label)
+        residual_axis.set_ylabel("ADMM residual (RMS)")
+        residual_axis.legend(fontsize=7)
+        for axis in (h_axis, grf_axis, residual_axis):
+            axis.set_title(title, fontsize=9)
+            axis.set_xlabel("time [s]")
+            axis.grid(True, alpha=0.3)
+    figure.tight_layout()
+    figure.savefig(path, dpi=80)
+    plt.close(figure)
 
 
 def plot_experiments(rows: list[dict], path: Path) -> None:
@@ -122,8 +176,10 @@ def reproduce_experiments(names: list[str], duration_s: float | None, out: Path,
     output.report(format_experiments(rows))
     out.mkdir(parents=True, exist_ok=True)
     plot_experiments(rows, out / "experiments.png")
+    plot_series(rows, out / "experiments_series.png")
     document = {"claim": "experiments", "profiles": profile_documents(profiles), "rows": rows}
     (out / "experiments.json").write_text(json.dumps(document) + "\n")
-    output.progress(f"wrote {out / 'experiments.json'} and {out / 'experiments.png'}")
+    output.progress(f"wrote {out / 'experiments.json'}, {out / 'experiments.png'} and "
+                    f"{out / 'experiments_series.png'}")
     output.write_json(document)
     return OK if all(row["as_expected"] for row in rows) else DIFFERS

@@ -34,6 +34,7 @@ class RunMetrics:
     # xy of the payload and of each robot [m], world frame, per ground-truth sample
     body_xy_m: list[np.ndarray] = field(default_factory=list)
     yaw_error_rad: list[float] = field(default_factory=list)
+    min_h_m: list[float] = field(default_factory=list)  # per sample: min over the pairs
     min_h_by_pair_m: np.ndarray | None = None
     max_coupling_error_m: float = 0.0
     fallen: set[str] = field(default_factory=set)
@@ -48,6 +49,12 @@ class RunMetrics:
     wrench_residual: list[float] = field(default_factory=list)
     position_residual_m: list[float] = field(default_factory=list)
     force_residual_n: list[float] = field(default_factory=list)
+    dual_residual: list[float] = field(default_factory=list)  # ||P (s-bar_r - s-bar_r-1)||
+    # per update: the planned first-stage GRFs (n_A, 12) [N], world frame, and their RMS
+    # change from the previous update's over the feet in stance in both (the plan's
+    # smoothness; a touch-down or lift-off is the gait's, not a jump; 0 for the first)
+    grf_n: list[np.ndarray] = field(default_factory=list)
+    grf_change_n: list[float] = field(default_factory=list)
     wbc_tick_ms: list[float] = field(default_factory=list)
     loop_tick_ms: list[float] = field(default_factory=list)  # whole 2 ms loop ticks, wall
     estimate_position_error_m: list[float] = field(default_factory=list)
@@ -72,6 +79,8 @@ class RunMetrics:
         yaw_error = payload_yaw_rad - desired_yaw_rad
         self.yaw_error_rad.append(float(np.arctan2(np.sin(yaw_error), np.cos(yaw_error))))
         h = np.asarray(safety_values_m, dtype=float).reshape(-1)
+        if h.size:
+            self.min_h_m.append(float(np.min(h)))
         self.min_h_by_pair_m = h if self.min_h_by_pair_m is None else np.minimum(
             self.min_h_by_pair_m, h)
         self.max_coupling_error_m = max(self.max_coupling_error_m,
@@ -89,6 +98,9 @@ class RunMetrics:
         self.flagged_plans += int(plan.flagged)
         self.relaxed_plans += int(plan.relaxed)
         self.max_barrier_slack_m = max(self.max_barrier_slack_m, plan.barrier_slack_m)
+        grf = np.array(plan.grf, dtype=float)
+        self.grf_change_n.append(_stance_change_n(self.grf_n[-1] if self.grf_n else None, grf))
+        self.grf_n.append(grf)
         if plan.admm_iterations:
             last = plan.admm_iterations[-1]
             self.payload_residual.append(float(np.sqrt(np.mean(last.primal_payload_rms ** 2))))
@@ -96,6 +108,7 @@ class RunMetrics:
             self.position_residual_m.append(
                 float(np.sqrt(np.mean(last.primal_position_rms_m ** 2))))
             self.force_residual_n.append(float(np.sqrt(np.mean(last.primal_force_rms_n ** 2))))
+            self.dual_residual.append(float(last.dual_norm))
 
     def record_estimate(self, estimate: np.ndarray, position_m: np.ndarray,
                         euler_rad: np.ndarray) -> None:
@@ -179,6 +192,16 @@ class RunMetrics:
             "nmpc_wall_s": float(np.sum(self.update_ms)) / 1e3,
             "wbc_wall_s": float(np.sum(self.wbc_tick_ms)) / 1e3,
         }
+
+
+def _stance_change_n(previous: np.ndarray | None, grf: np.ndarray) -> float:
+    """RMS change [N] of the GRF components of the feet loaded (normal force > 1 N) in both."""
+    if previous is None or previous.shape != grf.shape:
+        return 0.0
+    before, now = previous.reshape(-1, 3), grf.reshape(-1, 3)
+    stance = (before[:, 2] > 1.0) & (now[:, 2] > 1.0)
+    return float(np.sqrt(np.mean(np.square(now[stance] - before[stance])))) if stance.any() \
+        else 0.0
 
 
 def _rms(values: list[float]) -> float | None:

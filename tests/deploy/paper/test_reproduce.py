@@ -114,6 +114,16 @@ def test_porter_paper_experiments_draws_the_paths_among_the_safe_sets(
     moving = [o for o in row["obstacles"] if o["start_m"] != o["end_m"]]
     assert moving and all(o["safe_radius_m"] > o["radius_m"] for o in row["obstacles"])
     assert (tmp_path / "experiments.png").read_bytes().startswith(b"\x89PNG")
+    # the experiment figures' time series: h, planned GRFs, ADMM residuals
+    series = row["series"]
+    assert len(series["min_h_m"]) == len(series["sample_time_s"]) > 100
+    assert min(series["min_h_m"]) == pytest.approx(row["min_h_m"], abs=1e-9)
+    updates = len(series["update_time_s"])
+    assert updates >= 20 and len(series["force_residual_n"]) == updates
+    assert len(series["dual_residual"]) == updates and len(series["grf_z_sum_n"][0]) == 2
+    # the robots carry their own weight and the payload's: ~ (2 x 15 + 5) kg x g in all
+    assert 250 < sum(series["grf_z_sum_n"][-1]) < 450
+    assert (tmp_path / "experiments_series.png").read_bytes().startswith(b"\x89PNG")
 
 
 def test_porter_paper_experiments_include_the_four_agent_team(
@@ -155,3 +165,30 @@ def test_porter_paper_consensus_runs_the_wrench_only_ablation(
     for row in rows:
         assert math.isfinite(row["metrics"]["rms_payload_yaw_error_rad"])
     assert (tmp_path / "consensus.png").read_bytes().startswith(b"\x89PNG")
+
+
+def test_porter_paper_closed_loop_compares_distributed_and_centralized(
+        tmp_path: Path, capsys: pytest.CaptureFixture[str]) -> None:
+    assert main(["paper", "closed-loop", "--scenarios", "two_go2", "--duration", "0.3",
+                 "--out", str(tmp_path)]) == 0
+    assert "distributed vs centralized" in capsys.readouterr().out
+    document = json.loads((tmp_path / "closed-loop.json").read_text())
+    assert set(document["profiles"]) == {"porter", "paper"}
+    rows = document["rows"]
+    assert [(r["profile"], r["mode"]) for r in rows] == [
+        ("porter", "distributed"), ("porter", "centralized"),
+        ("paper", "distributed"), ("paper", "centralized")]
+    for row in rows:
+        assert row["falls"] == 0 and row["failed_updates"] == 0 and row["shortened"]
+        assert row["rms_payload_position_error_m"] > 0 and row["grf_change_rms_n"] > 0
+    for ratio, profile in zip(document["ratios"], ("porter", "paper"), strict=True):
+        assert ratio["profile"] == profile
+        distributed, centralized = (r for r in rows if r["profile"] == profile)
+        assert ratio["rms_payload_position_error_m_ratio"] == pytest.approx(
+            distributed["rms_payload_position_error_m"]
+            / centralized["rms_payload_position_error_m"])
+
+
+def test_closed_loop_refuses_unknown_scenarios(capsys: pytest.CaptureFixture[str]) -> None:
+    assert main(["paper", "closed-loop", "--scenarios", "nowhere"]) == 2
+    assert "unknown scenarios ['nowhere']" in capsys.readouterr().err
