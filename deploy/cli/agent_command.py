@@ -4,7 +4,7 @@ from __future__ import annotations
 
 import argparse
 
-from deploy.cli.conventions import Output, error
+from deploy.cli.conventions import Output, error, number_in, whole_number_in
 
 
 def add_agent_parser(commands: argparse._SubParsersAction) -> None:
@@ -20,8 +20,10 @@ def add_agent_parser(commands: argparse._SubParsersAction) -> None:
     source.add_argument("--settings", help="effective NMPC settings YAML (as porter writes "
                         "them for agents it starts); needs --agents")
     agent.add_argument("--config", help="YAML overriding MpcSettings fields (with --scenario)")
-    agent.add_argument("--agents", type=int, help="team size (with --settings)")
-    agent.add_argument("--index", type=int, required=True, help="this agent's robot, from 0")
+    agent.add_argument("--agents", type=whole_number_in(2, 64),
+                       help="team size (with --settings)")
+    agent.add_argument("--index", type=whole_number_in(0, 63), required=True,
+                       help="this agent's robot, from 0")
     agent.add_argument("--team", help="team name in every message (default: the scenario's)")
     agent.add_argument("--key-prefix", required=True,
                        help="the coordinator's key prefix, e.g. porter/two_go2/4711")
@@ -29,7 +31,8 @@ def add_agent_parser(commands: argparse._SubParsersAction) -> None:
                        help="the coordinator's Zenoh endpoints, e.g. tcp/127.0.0.1:7447")
     agent.add_argument("--listen", nargs="+", default=[],
                        help="endpoints this agent listens on (default: none)")
-    agent.add_argument("--peer-timeout", type=float, default=1.0, metavar="S",
+    agent.add_argument("--peer-timeout", type=number_in(0.0, 60.0, low_open=True),
+                       default=1.0, metavar="S",
                        help="coordinator-free topology: a peer silent this long fails the "
                             "update (default 1 s)")
     agent.add_argument("--quiet", action="store_true",

@@ -6,7 +6,7 @@ from __future__ import annotations
 import argparse
 from collections.abc import Callable
 
-from deploy.cli.conventions import Output, add_output_options
+from deploy.cli.conventions import Output, add_output_options, number_in, whole_number_in
 from deploy.cli.sim_arguments import add_delay_arguments, delay_settings
 
 __all__ = ["add_bench_parser"]
@@ -198,7 +198,7 @@ def add_bench_parser(commands: argparse._SubParsersAction, positive_number: Numb
     recorder.add_argument("--repeats", type=count, default=2, help="runs per configuration")
     recorder.add_argument("--executor", default="process", choices=["process", "serial"],
                           help="where the ADMM local solves run")
-    recorder.add_argument("--memory-minutes", type=float, default=30.0,
+    recorder.add_argument("--memory-minutes", type=number_in(0.0, 1440.0), default=30.0,
                           help="simulated minutes for the memory check (0: skip)")
     recorder.add_argument("--config", help="YAML file overriding MpcSettings fields")
 
@@ -210,7 +210,8 @@ def add_bench_parser(commands: argparse._SubParsersAction, positive_number: Numb
                          help="round trips per Unitree link (Go2 DDS, A1 UDP)")
     drivers.add_argument("--stream-samples", type=count, default=600,
                          help="NatNet frames and CAN samples")
-    drivers.add_argument("--domain", type=int, default=0, help="DDS domain id (loopback)")
+    drivers.add_argument("--domain", type=whole_number_in(0, 232), default=0,
+                         help="DDS domain id (loopback)")
 
     deploy = kind("deploy", "WBC and NMPC loop timing of porter deploy --backend sim",
                   "porter deploy --backend sim per time scale and run: completion, loop and "

@@ -25,14 +25,53 @@ from __future__ import annotations
 
 import argparse
 import json
+import math
 import sys
+from collections.abc import Callable
 from pathlib import Path
 from typing import Any
 
 __all__ = ["DIFFERS", "OK", "SAFE_STOP", "STOPPED", "USAGE", "Output", "add_output_options",
-           "error", "os_error"]
+           "add_record_options", "error", "existing_record", "number_in", "os_error",
+           "whole_number_in"]
 
 OK, DIFFERS, USAGE, SAFE_STOP, STOPPED = 0, 1, 2, 3, 130
+
+
+def number_in(low: float, high: float, low_open: bool = False, high_open: bool = False
+              ) -> Callable[[str], float]:
+    """An argument type: a finite number within [low, high] (an open end excludes it)."""
+    left, right = "(" if low_open else "[", ")" if high_open else "]"
+
+    def parse(text: str) -> float:
+        try:
+            value = float(text)
+        except ValueError:
+            raise argparse.ArgumentTypeError(f"{text!r} is not a number") from None
+        inside = (math.isfinite(value) and (value > low if low_open else value >= low)
+                  and (value < high if high_open else value <= high))
+        if not inside:
+            raise argparse.ArgumentTypeError(
+                f"must be a finite number in {left}{low:g}, {high:g}{right}, got {text}")
+        return value
+
+    return parse
+
+
+def whole_number_in(low: int, high: int) -> Callable[[str], int]:
+    """An argument type: a whole number within [low, high]."""
+
+    def parse(text: str) -> int:
+        try:
+            value = int(text)
+        except ValueError:
+            raise argparse.ArgumentTypeError(f"{text!r} is not a whole number") from None
+        if not low <= value <= high:
+            raise argparse.ArgumentTypeError(f"must be a whole number in [{low}, {high}], "
+                                             f"got {text}")
+        return value
+
+    return parse
 
 
 def add_output_options(parser: argparse.ArgumentParser, report: str) -> None:
@@ -43,6 +82,23 @@ def add_output_options(parser: argparse.ArgumentParser, report: str) -> None:
     parser.add_argument("--quiet", action="store_true",
                         help="print nothing but errors (the exit code and --json carry the "
                              "result)")
+
+
+def add_record_options(parser: argparse.ArgumentParser, default: str) -> None:
+    """``--record LOG.mcap`` (default ``default``), ``--no-record`` and ``--force``."""
+    parser.add_argument("--record", metavar="LOG.mcap", help=f"flight log (default {default}); "
+                        "an existing file is refused unless --force")
+    parser.add_argument("--force", action="store_true",
+                        help="overwrite an existing --record file")
+
+
+def existing_record(args: argparse.Namespace) -> str | None:
+    """Why ``--record`` must not be written (a file is there and no ``--force``), or None."""
+    record = getattr(args, "record", None)
+    if record and Path(record).exists() and not getattr(args, "force", False):
+        return (f"--record {record}: the file exists; give another path, or --force to "
+                "overwrite it")
+    return None
 
 
 class Output:

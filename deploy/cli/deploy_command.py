@@ -83,6 +83,11 @@ def run_deploy(args: argparse.Namespace) -> int:
     if args.no_record and args.backend == "hw":
         raise ConfigError("--no-record: every run on robots is recorded (allowed with "
                           "--backend sim only)")
+    if not config.watchdog.enabled and args.backend == "hw":
+        # the watchdog is what damps the motors when this process dies: robots never go
+        # without it
+        raise ConfigError(f"{args.config}: watchdog.enabled: false is refused on robots "
+                          "(allowed with --backend sim only)")
     duration_s = args.duration if args.duration is not None else scenario.duration_s
     if not duration_s > 0:
         raise ConfigError(f"--duration: must be positive, got {duration_s}")

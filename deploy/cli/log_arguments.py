@@ -6,7 +6,7 @@ from __future__ import annotations
 import argparse
 from collections.abc import Callable
 
-from deploy.cli.conventions import add_output_options
+from deploy.cli.conventions import add_output_options, number_in
 
 Handler = Callable[[argparse.Namespace], int]
 
@@ -61,7 +61,8 @@ def add_log_parsers(commands: argparse._SubParsersAction, regress_handler: Handl
     timeline.add_argument("log", help="LOG.mcap")
     timeline.add_argument("--around-fault", action="store_true", required=True,
                           help="the window before each safe stop (the only view so far)")
-    timeline.add_argument("--window-ms", type=float, default=50.0,
+    timeline.add_argument("--window-ms", type=number_in(0.0, 60_000.0, low_open=True),
+                          default=50.0,
                           help="how far before each stop to look [ms] (default 50)")
     add_output_options(timeline, "the timelines")
     timeline.set_defaults(handler=_log_timeline)

@@ -11,7 +11,15 @@ from typing import TYPE_CHECKING
 
 from deploy.cli.agent_command import add_agent_parser
 from deploy.cli.bench_command import add_bench_parser
-from deploy.cli.conventions import STOPPED, USAGE, add_output_options, error, os_error
+from deploy.cli.conventions import (
+    STOPPED,
+    USAGE,
+    add_output_options,
+    add_record_options,
+    error,
+    existing_record,
+    os_error,
+)
 from deploy.cli.log_arguments import add_log_parsers
 from deploy.cli.paper_command import add_paper_parser
 from deploy.cli.sim_arguments import add_sim_parser
@@ -63,12 +71,16 @@ def mpc_settings(args: argparse.Namespace) -> MpcSettings:
 def _sim(args: argparse.Namespace) -> int:
     from deploy.cli.sim_command import run_sim
 
+    if problem := existing_record(args):
+        return error(problem)
     return run_sim(args, mpc_settings(args))
 
 
 def _deploy(args: argparse.Namespace) -> int:
     from deploy.cli.deploy_command import run_deploy
 
+    if problem := existing_record(args):  # refused before any robot stands up
+        return error(problem)
     return run_deploy(args)
 
 
@@ -129,8 +141,7 @@ def build_parser() -> argparse.ArgumentParser:
     deploy.add_argument("--yes", action="store_true", help="arm without asking the operator")
     deploy.add_argument("--duration", type=positive_number, metavar="S",
                         help="seconds to run once armed (default: the scenario's duration_s)")
-    deploy.add_argument("--record", metavar="LOG.mcap",
-                        help="flight log (default runs/deploy-<scenario>-<time>.mcap)")
+    add_record_options(deploy, "runs/deploy-<scenario>-<time>.mcap")
     deploy.add_argument("--no-record", action="store_true",
                         help="no flight log (--backend sim only)")
     add_output_options(deploy, "the summary")

@@ -6,7 +6,12 @@ from __future__ import annotations
 import argparse
 from collections.abc import Callable
 
-from deploy.cli.conventions import add_output_options
+from deploy.cli.conventions import (
+    add_output_options,
+    add_record_options,
+    number_in,
+    whole_number_in,
+)
 
 
 def add_sim_parser(commands: argparse._SubParsersAction,
@@ -25,7 +30,8 @@ def add_sim_parser(commands: argparse._SubParsersAction,
                      "(the paper's NLP, IPOPT to convergence), porter (the defaults)")
     sim.add_argument("--duration", type=positive_number, metavar="S",
                      help="instead of the scenario's duration_s")
-    sim.add_argument("--seed", type=int, help="instead of the scenario's seed")
+    sim.add_argument("--seed", type=whole_number_in(0, 2**32 - 1),
+                     help="instead of the scenario's seed")
     sim.add_argument("--mode", choices=["distributed", "centralized", "wrench-only"],
                      help="instead of the scenario's controller.mode")
     sim.add_argument("--executor", choices=["process", "serial", "zenoh"],
@@ -34,25 +40,24 @@ def add_sim_parser(commands: argparse._SubParsersAction,
     sim.add_argument("--delay", action="store_true", help="apply each plan after its solve")
     add_delay_arguments(sim)
     add_output_options(sim, "the summary")
-    sim.add_argument("--record", metavar="LOG.mcap",
-                     help="flight log (default runs/<scenario>-<time>.mcap)")
+    add_record_options(sim, "runs/<scenario>-<time>.mcap")
     sim.add_argument("--no-record", action="store_true", help="write no flight log")
     sim.add_argument("--keyframe-every", type=count, metavar="N",
                      help="warm start logged every N updates (60)")
     sim.add_argument("--rerun", nargs="?", const="spawn", metavar="TARGET",
                      help="live view: spawn (default), connect, URL or FILE.rrd")
-    sim.add_argument("--channel-delay-rounds", type=int, metavar="D",
+    sim.add_argument("--channel-delay-rounds", type=whole_number_in(0, 1000), metavar="D",
                      help="ADMM messages up to D rounds late: the newest one that arrived "
                      "is held, and left out of the consensus once older than the channel's "
                      "max_age_rounds (2 by default; null in a scenario: pure hold-last)")
-    sim.add_argument("--channel-drop", type=float, metavar="P",
+    sim.add_argument("--channel-drop", type=number_in(0.0, 1.0, high_open=True), metavar="P",
                      help="ADMM messages dropped with probability P")
     sim.set_defaults(handler=handler)
 
 
 def add_delay_arguments(parser: argparse.ArgumentParser) -> None:
     """``--delay-s`` and ``--overlap`` (``porter sim``, ``porter bench sim``)."""
-    parser.add_argument("--delay-s", type=float, metavar="S",
+    parser.add_argument("--delay-s", type=number_in(0.0, 0.5), metavar="S",
                         help="apply each plan S seconds after its decision (deterministic)")
     parser.add_argument("--overlap", action="store_true",
                         help="with a fixed delay: the NMPC computes in its own process while "

@@ -263,12 +263,18 @@ class DeployConfig(StrictModel):
     def _budgets_can_trip(self) -> DeployConfig:
         for where, safety in (("safety", self.safety), ("sim.safety_overrides", None)):
             settings = safety if safety is not None else self.sim_safety()
-            most = self.rates.nmpc_hz * settings.deadline_window_s
-            if settings.deadline_overrun_budget > most:
-                raise ValueError(
-                    f"{where}: deadline_overrun_budget {settings.deadline_overrun_budget} can "
-                    f"never be used up: at most rates.nmpc_hz x deadline_window_s = {most:g} "
-                    "updates fit in the window")
+            # a budget trips when MORE than it are counted in the window: it must be below
+            # the most that can be counted there
+            for budget, rate, counted in (
+                    ("deadline_overrun_budget", "nmpc_hz", "updates"),
+                    ("loop_overrun_budget", "wbc_hz", "loop ticks")):
+                most = getattr(self.rates, rate) * settings.deadline_window_s
+                value = getattr(settings, budget)
+                if value >= most:
+                    raise ValueError(
+                        f"{where}: {budget} {value} can never be used up: at most "
+                        f"rates.{rate} x deadline_window_s = {most:g} {counted} fit in the "
+                        f"window; set it below {most:g}")
         return self
 
     def sim_safety(self) -> SupervisorSettings:

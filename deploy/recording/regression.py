@@ -159,14 +159,25 @@ def compare(report: LogRegression, update: int, plan: MpcPlan, logged: pb.NmpcUp
                                     f"logged {logged_status}")
 
 
+def array_deviation(ours: np.ndarray, theirs: np.ndarray) -> float:
+    """The largest |ours - theirs| over finite values; NaN matches only NaN in the same place
+    and an infinity only the same infinity there, anything else (or another shape) is inf."""
+    ours, theirs = np.asarray(ours, float), np.asarray(theirs, float)
+    if ours.shape != theirs.shape:
+        return math.inf
+    missing = np.isnan(ours)
+    if not np.array_equal(missing, np.isnan(theirs)):
+        return math.inf
+    a, b = ours[~missing], theirs[~missing]
+    infinite = np.isinf(a) | np.isinf(b)
+    if np.any(a[infinite] != b[infinite]):
+        return math.inf
+    return float(np.max(np.abs(a[~infinite] - b[~infinite]), initial=0.0))
+
+
 def _fold(report: LogRegression, key: str, ours: np.ndarray, theirs: np.ndarray, update: int,
           iteration: int | None = None) -> None:
-    ours, theirs = np.asarray(ours, float), np.asarray(theirs, float)
-    deviation = (math.inf if ours.shape != theirs.shape
-                 else float(np.max(np.abs(ours - theirs), initial=0.0)))
-    if not math.isfinite(deviation) and ours.shape == theirs.shape \
-            and np.array_equal(np.isfinite(ours), np.isfinite(theirs)):
-        deviation = 0.0
+    deviation = array_deviation(ours, theirs)
     report.max_deviation[key] = max(report.max_deviation[key], deviation)
     if deviation > TOLERANCES[key] and not report.first_failure:
         where = f"update {update}" + ("" if iteration is None else f", ADMM iteration {iteration}")

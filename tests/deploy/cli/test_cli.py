@@ -122,8 +122,10 @@ def test_overlap_without_a_fixed_delay_is_refused_naming_the_fields(
         capsys: pytest.CaptureFixture) -> None:
     assert main(["sim", "--overlap", "--duration", "0.2", "--no-record"]) == 2
     assert "overlap_computation needs" in capsys.readouterr().err
-    assert main(["bench", "sim", "two_go2", "--duration", "0.2", "--delay-s", "-1"]) == 2
-    assert "controller.computation_delay_s" in capsys.readouterr().err
+    with pytest.raises(SystemExit) as exit_info:  # refused while parsing, with its range
+        main(["bench", "sim", "two_go2", "--duration", "0.2", "--delay-s", "-1"])
+    assert exit_info.value.code == 2
+    assert "argument --delay-s: must be a finite number in [0, 0.5]" in capsys.readouterr().err
 
 
 def test_bench_sim_overlapped_reports_its_delay(tmp_path: Path,

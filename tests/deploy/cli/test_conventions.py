@@ -120,3 +120,51 @@ def test_sim_exits_as_expected_on_a_real_short_run() -> None:
                           capture_output=True, text=True, timeout=600, check=False)
     assert done.returncode == OK, done.stderr
     assert json.loads(done.stdout)["outcome"] == "time out"  # stdout: the document alone
+
+
+@pytest.mark.parametrize("command", [
+    ["sim", "two_go2", "--duration", "0.1"],
+    ["deploy", "--config", "two_go2", "--backend", "sim", "--yes", "--duration", "0.1"],
+])
+def test_an_existing_flight_log_is_never_overwritten_without_force(
+        tmp_path: Path, command: list[str], capsys: pytest.CaptureFixture[str]) -> None:
+    from deploy.cli.conventions import existing_record
+
+    log = tmp_path / "earlier.mcap"
+    log.write_bytes(b"an earlier run")
+    assert main([*command, "--record", str(log)]) == USAGE
+    assert "the file exists" in capsys.readouterr().err and "--force" in str(
+        existing_record(argparse.Namespace(record=str(log), force=False)))
+    assert log.read_bytes() == b"an earlier run"  # nothing was run, nothing written
+    assert existing_record(argparse.Namespace(record=str(log), force=True)) is None
+    assert existing_record(argparse.Namespace(record=str(tmp_path / "new.mcap"),
+                                              force=False)) is None
+
+
+@pytest.mark.parametrize(("command", "option"), [
+    (["agent", "--scenario", "two_go2", "--key-prefix", "porter/x/1", "--index", "0"],
+     "--peer-timeout"),
+    (["agent", "--scenario", "two_go2", "--key-prefix", "porter/x/1"], "--index"),
+    (["bench", "agents"], "--duration"),
+    (["bench", "agents"], "--messages"),
+    (["bench", "agents"], "--repeats"),
+    (["bench", "recorder"], "--memory-minutes"),
+    (["bench", "drivers"], "--domain"),
+    (["log", "timeline", "logs/two_go2.mcap", "--around-fault"], "--window-ms"),
+    (["sim"], "--seed"),
+    (["sim"], "--channel-delay-rounds"),
+    (["sim"], "--channel-drop"),
+    (["sim"], "--delay-s"),
+])
+@pytest.mark.parametrize("value", ["inf", "nan", "-1"])
+def test_every_numeric_option_is_finite_and_in_range(
+        command: list[str], option: str, value: str,
+        capsys: pytest.CaptureFixture[str]) -> None:
+    # (refused while parsing: nothing runs)
+    with pytest.raises(SystemExit) as exit_info:
+        main([*command, option, value])
+    assert exit_info.value.code == USAGE
+    assert f"argument {option}" in capsys.readouterr().err
+    if command[0] in ("agent", "sim") or option in ("--domain", "--memory-minutes"):
+        with pytest.raises(SystemExit):  # and above its range
+            main([*command, option, "1e9"])

@@ -438,6 +438,12 @@ def test_the_world_keeps_off_the_loops_core(tmp_path: Path, sim: dict, message: 
     ("mocap", {"stale_timeout_s": 30.0}, "mocap.stale_timeout_s"),
     ("posture", {"kd": 0.0}, "posture.kd"),
     ("safety", {"deadline_overrun_budget": 200}, "deadline_overrun_budget 200 can never"),
+    ("safety", {"deadline_overrun_budget": 60}, "deadline_overrun_budget 60 can never"),
+    # 500 late ticks can never be more than the 500 ticks of a 1 s window at 500 Hz
+    ("safety", {"loop_overrun_budget": 500}, "loop_overrun_budget 500 can never"),
+    ("safety", {"loop_overrun_budget": 300, "deadline_window_s": 0.5,
+                "deadline_overrun_budget": 10},
+     "loop_overrun_budget 300 can never"),
 ])
 def test_configs_cannot_switch_safety_off(tmp_path: Path, section: str, values: dict,
                                           field: str) -> None:
@@ -509,6 +515,13 @@ def test_bench_deploy_loop_priorities_are_validated(text: str, ok: bool,
 def test_no_record_is_refused_on_robots(capsys: pytest.CaptureFixture[str]) -> None:
     assert main(["deploy", "--config", str(TWO_GO2), "--no-record"]) == 2
     assert "every run on robots is recorded" in capsys.readouterr().err
+
+
+def test_robots_never_run_without_the_watchdog(tmp_path: Path,
+                                               capsys: pytest.CaptureFixture[str]) -> None:
+    path = _config(tmp_path, watchdog={"enabled": False})
+    assert main(["deploy", "--config", str(path), "--yes"]) == 2
+    assert "watchdog.enabled: false is refused on robots" in capsys.readouterr().err
 
 
 # --- parts ----------------------------------------------------------------------------------

@@ -4,12 +4,14 @@ and violated expectations fail with a non-zero exit code."""
 from __future__ import annotations
 
 import json
+import math
 import platform
 import shutil
 import subprocess
 import sys
 from pathlib import Path
 
+import numpy as np
 import pytest
 import yaml
 
@@ -154,3 +156,21 @@ def test_a_changed_wbc_gain_passes_the_replay_and_fails_the_resimulation(tmp_pat
     assert report["status_mismatches"] == 0
     assert report["resimulated"]
     assert any("nmpc_margin_flags" in failure for failure in report["expectation_failures"])
+
+
+@pytest.mark.parametrize(("ours", "theirs", "expected"), [
+    ([1.0, 2.0], [1.0, 2.5], 0.5),
+    ([1.0, math.nan], [5.0, math.nan], 4.0),  # NaN matches NaN, the rest is compared
+    ([math.nan, 1.0], [math.nan, 1.0], 0.0),
+    ([math.nan, 1.0], [1.0, math.nan], math.inf),  # NaN in another place
+    ([1.0, 2.0], [1.0, math.nan], math.inf),
+    ([math.inf, 1.0], [-math.inf, 1.0], math.inf),  # infinities are values
+    ([math.inf, 1.0], [math.inf, 3.0], 2.0),
+    ([math.inf], [1e308], math.inf),
+    ([1.0, 2.0], [1.0, 2.0, 3.0], math.inf),  # another shape
+])
+def test_deviation_compares_nan_only_to_nan_and_infinities_as_values(
+        ours: list[float], theirs: list[float], expected: float) -> None:
+    from deploy.recording.regression import array_deviation
+
+    assert array_deviation(np.array(ours), np.array(theirs)) == expected
