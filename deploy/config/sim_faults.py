@@ -14,8 +14,8 @@ __all__ = ["GO2_FAULTS", "PORTER_FAULTS", "ROBOT_FAULTS", "TIMED_FAULTS", "SimFa
 ROBOT_FAULTS = ("robot_silent", "robot_stall", "robot_frozen", "robot_garbage", "robot_nan",
                 "robot_bad_crc", "robot_push")
 TIMED_FAULTS = ("robot_stall", "plan_late")  # the faults with a duration_s (and only they)
-# the Go2 fake's wire faults
-GO2_FAULTS = ("robot_frozen", "robot_garbage", "robot_nan", "robot_bad_crc")
+# the Go2 fake's wire faults (robot_frozen: either fake)
+GO2_FAULTS = ("robot_garbage", "robot_nan", "robot_bad_crc")
 # Faults porter's own process injects into itself (``deploy.sim_backend.porter_faults``), at
 # ``at_s`` on the loop's clock; the others are the world's.
 PORTER_FAULTS = ("nmpc_failure", "recorder_failure", "loop_stall", "plan_late")
@@ -30,8 +30,8 @@ class SimFault(StrictModel):
     last), ``mocap_foreign`` (every frame is also sent from another host), ``natnet_malformed``
     (a malformed packet beside every frame), ``robot_silent`` (``robot``'s fake stops
     publishing its state), ``robot_stall`` (it publishes no state for ``duration_s``, then
-    goes on; physics and commands run on), ``robot_frozen`` (a Go2 ``robot``'s fake keeps
-    publishing its last state, tick included), ``robot_garbage`` (it publishes bytes that are
+    goes on; physics and commands run on), ``robot_frozen`` (``robot``'s fake, Go2 or A1,
+    keeps publishing its last state, tick included), ``robot_garbage`` (it publishes bytes that are
     no ``LowState_``), ``robot_nan`` (a joint angle of its state is NaN), ``robot_bad_crc`` (its
     states carry a wrong CRC: one bit flipped on the way), ``robot_push`` (a 300 N sideways push on
     ``robot``'s trunk for 0.4 s). Porter's own (``PORTER_FAULTS``): ``nmpc_failure`` (every NMPC

@@ -31,9 +31,10 @@ Action = Literal["none", "sigterm", "sigint", "kill_nmpc", "kill_porter"]
 
 @dataclass(frozen=True)
 class DrillFault:
-    """One drill case: ``config`` is merged into the drill's deploy config (section by
-    section), ``args`` replace command-line options, ``action`` is done from outside at
-    ``AT_S``; ``cause`` must appear in the safe-stop reason (or, refused, in the error)."""
+    """One drill case: ``config`` is merged into the drill's deploy config (the shipped
+    ``deployment``'s, section by section), ``args`` replace command-line options, ``action``
+    is done from outside at ``AT_S``; ``cause`` must appear in the safe-stop reason (or,
+    refused, in the error)."""
 
     name: str
     expect: Expect
@@ -43,6 +44,7 @@ class DrillFault:
     action: Action = "none"
     rejected: str = ""  # ignored: the link that must have counted refusals ("mocap", a robot)
     evidence: str = ""  # rides through: a summary count (dotted key) that must be above 0
+    deployment: str = "two_go2"  # the shipped deploy config the case starts from
 
 
 def _sim(kind: str, robot: str | None = None, at_s: float = AT_S,
@@ -87,6 +89,9 @@ def catalogue() -> list[DrillFault]:
                    _sim("robot_frozen", "go2_0")),
         DrillFault("robot go2_1 frozen (tick stops)", stop, "frozen tick",
                    _sim("robot_frozen", "go2_1")),
+        DrillFault("robot a1_2 frozen (tick stops; the mixed team)", stop,
+                   "frozen tick", _sim("robot_frozen", "a1_2"),
+                   deployment="two_go2_a1"),
         DrillFault("robot go2_0 malformed LowState", stop, "robot state stale: go2_0",
                    _sim("robot_garbage", "go2_0")),
         DrillFault("robot go2_1 LowState with a bad CRC", stop, "'crc'",

@@ -1,6 +1,7 @@
 """Run one drill fault as its own ``porter deploy --backend sim`` and judge it from outside.
 
-Each fault gets a copy of the shipped ``two_go2`` deploy config with a short stand-up
+Each fault gets a copy of a shipped deploy config (``two_go2`` unless the case names
+another) with a short stand-up
 (``STAND_UP``), in slow motion (``SLOW_MOTION``), the fault's changes merged in, and a run of
 ``DURATION_S``. The verdict reads:
 the exit code; the summary (stdout JSON); the simulator's truth in it (per robot: the first
@@ -63,7 +64,7 @@ def _merge(base: dict[str, Any], changes: dict[str, Any]) -> dict[str, Any]:
 
 
 def _config(fault: DrillFault, folder: Path) -> Path:
-    data = yaml.safe_load((CONFIG_DIR / "two_go2.yaml").read_text())
+    data = yaml.safe_load((CONFIG_DIR / f"{fault.deployment}.yaml").read_text())
     data = _merge(_merge(_merge(data, STAND_UP), SLOW_MOTION), fault.config)
     if fault.action == "kill_porter":  # the world outlives porter and reports what it saw
         data = _merge(data, {"sim": {"orphan_report": str(folder / ORPHAN_REPORT)}})

@@ -46,14 +46,13 @@ def inject_due_faults(world: SimWorld, elapsed_s: float) -> None:
             world.network_faults.add(fault.kind)
         elif fault.kind == "robot_push" and fault.robot is not None:
             world.simulation.apply_push(fault.robot, np.array([0.0, 300.0, 0.0]), 0.4)
-        elif fault.kind in ("robot_frozen", "robot_garbage", "robot_nan", "robot_bad_crc") \
+        elif fault.kind == "robot_frozen" and fault.robot is not None:
+            world.fakes[fault.robot].frozen = True  # either fake: both resend their last state
+        elif fault.kind in ("robot_garbage", "robot_nan", "robot_bad_crc") \
                 and fault.robot is not None:
             fake = world.fakes[fault.robot]
             if isinstance(fake, FakeGo2):  # load_deploy_config allows no other
-                if fault.kind == "robot_frozen":
-                    fake.frozen = True
-                else:
-                    fake.corrupt = fault.kind.removeprefix("robot_")
+                fake.corrupt = fault.kind.removeprefix("robot_")
         elif fault.kind in PORTER_FAULTS:
             pass  # porter injects it itself (deploy.sim_backend.porter_faults); counted
         world.faults_applied.append({"kind": fault.kind, "robot": fault.robot,

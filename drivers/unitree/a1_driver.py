@@ -124,6 +124,12 @@ class A1Driver(UnitreeLowLevelDriver):
         if level_flag != LEVEL_FLAG_LOW:
             return "level", None
         problem = state_problem(state)
+        if problem is None and self.last_state is not None \
+                and state.tick_ms == self.last_state.tick_ms:
+            # As on the Go2: the robot's tick advances with every message, so the same tick
+            # again is a frozen state (sensors or firmware loop stopped), and a robot that
+            # keeps repeating itself ends in a lost link after the timeout.
+            problem = "frozen tick"
         return (problem, None) if problem is not None else ("", state)
 
     def _wait_readable(self, timeout_s: float) -> None:

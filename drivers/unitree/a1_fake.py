@@ -58,6 +58,9 @@ class FakeA1(RealTimeFake):
         self.commands_rejected: Counter[str] = Counter()
         self.states_published = 0
         self.last_command: JointCommand | None = None
+        self.frozen = False  # True: resend the last state byte for byte (see publish_state)
+        self._last_state_bytes: bytes | None = None
+        self._tick_ms = -1
         self._last_source: tuple[str, int] | None = None
         self._runner = PeriodicThread("FakeA1")
 
@@ -114,15 +117,24 @@ class FakeA1(RealTimeFake):
         return True
 
     def publish_state(self) -> bool:
-        """Send the simulated robot's state (tick = sim time [ms]) to the peer; False when no
-        peer is known yet."""
+        """Send the simulated robot's state to the peer; False when no peer is known yet. Its
+        ``tick`` [ms] advances with every message, as the robot's does (simulated time in ms,
+        at least one more than the last). ``frozen`` resends the last datagram byte for byte,
+        tick included (a robot whose sensors or firmware loop stopped while its network stack
+        runs on)."""
         peer = self.peer_address or self._last_source
         if peer is None:
             return False
+        if self.frozen and self._last_state_bytes is not None:
+            self._socket.sendto(self._last_state_bytes, peer)
+            self.states_published += 1
+            return True
         measurement = self.driver.read()
+        self._tick_ms = max(round(measurement.time_s * 1000.0), self._tick_ms + 1)
         wire = wire_state_from_measurement(measurement, self.foot_force_n_per_count,
-                                           tick_ms=round(measurement.time_s * 1000.0))
-        self._socket.sendto(encode_low_state(wire, crc=self.crc), peer)
+                                           tick_ms=self._tick_ms)
+        self._last_state_bytes = encode_low_state(wire, crc=self.crc)
+        self._socket.sendto(self._last_state_bytes, peer)
         self.states_published += 1
         return True
 

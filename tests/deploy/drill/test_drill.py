@@ -129,7 +129,8 @@ def test_a_refused_config_must_exit_2_and_name_the_field(tmp_path: Path) -> None
                                   "kill -9 of porter (the loop's own process)",
                                   "robot go2_0 state stalls 20 ms",
                                   "robot go2_1 state stalls 60 ms (past its stale-state budget)",
-                                  "NMPC plan 50 ms late"])
+                                  "NMPC plan 50 ms late",
+                                  "robot a1_2 frozen (tick stops; the mixed team)"])
 def test_drill_faults_end_to_end(tmp_path: Path, name: str) -> None:
     (fault,) = [f for f in catalogue() if f.name == name]
     row = run_fault(fault, tmp_path / "run")

@@ -244,6 +244,41 @@ def test_link_lost_then_recovered(link):
     assert driver.link.reconnections == 1
 
 
+def test_a_frozen_state_is_a_lost_link_and_a_fresh_one_recovers(link):
+    """As the Go2's: the fake's tick advances with every message, even with the simulation
+    standing still; an A1 repeating its last datagram (same tick) is not heard from, so the
+    link times out, and its next fresh state recovers it."""
+    _, fake, driver = link
+
+    def deliver(count: int) -> int:
+        seen = driver.link.received + driver.link.rejected_total + count
+        valid, deadline = 0, time.monotonic() + 2.0
+        while driver.link.received + driver.link.rejected_total < seen:
+            assert time.monotonic() < deadline, "states did not arrive"
+            valid += driver.poll()
+            time.sleep(0.001)
+        return valid
+
+    ticks = []
+    for _ in range(3):
+        fake.publish_state()  # simulated time does not move between these
+        assert deliver(1) == 1
+        assert driver.last_state is not None
+        ticks.append(driver.last_state.tick_ms)
+    assert ticks[0] < ticks[1] < ticks[2]
+    fake.frozen = True
+    for _ in range(3):
+        fake.publish_state()
+    assert deliver(3) == 0 and driver.link.rejected["frozen tick"] == 3
+    driver.clock.now_s += 0.2
+    with pytest.raises(LinkLostError, match=r"rejected \{'frozen tick': 3\}"):
+        driver.read()
+    fake.frozen = False
+    fake.publish_state()
+    assert deliver(1) == 1
+    assert driver.read().position_rad.shape == (12,) and driver.link.reconnections == 1
+
+
 def test_default_binding_is_loopback_and_cannot_reach_the_robot():
     driver = A1Driver(local_port=0)
     assert driver.local_endpoint[0] == "127.0.0.1"
