@@ -182,3 +182,22 @@ def test_the_lockstep_executor_spins_only_with_two_cpus_or_more() -> None:
     finally:
         os.sched_setaffinity(0, cpus)
     assert lockstep_spin_s() == (LOCKSTEP_EXECUTOR_SPIN_S if len(cpus) > 1 else 0.0)
+
+
+@pytest.mark.slow
+def test_a_robot_pushed_over_is_a_fall_that_the_supervisor_stops_and_the_summary_says() -> None:
+    """A 150 N push for 0.3 s (45 N s) on go2_0's trunk topples the team: the fall detector
+    fires, the supervisor safe-stops the run, and the summary names the fallen robot."""
+    from deploy.config.scenario import DisturbanceSettings, PushSpec
+
+    scenario = _short("two_go2", 4.0)
+    scenario = scenario.model_copy(update={"disturbances": DisturbanceSettings(pushes=[
+        PushSpec(time_s=2.0, duration_s=0.3, target="go2_0", force_n=(0.0, 150.0, 0.0))])})
+    summary = _run(scenario)
+    assert summary["falls"] >= 1 and summary["fallen_robots"], summary["fallen_robots"]
+    assert summary["outcome"].startswith("safe stop") and "fell" in summary["outcome"]
+    assert summary["safety"]["safe_stop"] and summary["safety"]["final_state"] == "DONE"
+    assert not summary["reached_goal"] and summary["duration_s"] < 4.0
+    # the same run without the push: no fall, no stop (the check is of the push)
+    calm = _run(_short("two_go2", 4.0))
+    assert calm["falls"] == 0 and calm["safety"]["safe_stop"] is None
