@@ -30,6 +30,7 @@ from deploy.agents import wire
 from deploy.agents.zenoh_session import (
     concrete_endpoint,
     hello_key,
+    key_agent,
     open_session,
     reply_key,
     request_key,
@@ -37,6 +38,12 @@ from deploy.agents.zenoh_session import (
 )
 
 HEARTBEAT_S = 0.5
+# Peers' shared trajectories kept for rounds not reached yet: at most this many (sequence,
+# iteration) rounds, and none more than MAX_SEQUENCES_AHEAD requests ahead of the newest
+# this agent finished (a slow agent whose requests were superseded may lag some). A flood of
+# future rounds is counted and dropped, not stored: memory stays bounded.
+MAX_PENDING_ROUNDS = 2 * wire.MAX_ADMM_ITERATIONS
+MAX_SEQUENCES_AHEAD = 64
 
 
 @dataclass(frozen=True)
@@ -76,6 +83,7 @@ class AdmmAgent:
         # peers' shared trajectories: (sequence, iteration) -> agent -> s^j
         self._shared: dict[tuple[int, int], dict[int, np.ndarray]] = {}
         self._shared_arrived = threading.Condition()
+        self._finished_sequence = 0  # the newest coordinator-free round this agent answered
         self._shared_out: object = None
 
     def serve(self) -> None:
@@ -137,6 +145,7 @@ class AdmmAgent:
             with self._shared_arrived:  # this round is over: forget it and older ones
                 self._shared = {key: value for key, value in self._shared.items()
                                 if key[0] > sequence}
+                self._finished_sequence = max(self._finished_sequence, sequence)
         else:
             reply = wire.encode_reply(solve_request(self.solver, local), a.team, a.agent,
                                       sequence, local)
@@ -152,8 +161,21 @@ class AdmmAgent:
         except wire.WireError as error:
             self.rejected[error.reason.split(":")[0]] += 1
             return
+        if key_agent(sample.key_expr) != agent:  # type: ignore[attr-defined]
+            self.rejected["agent not its key's"] += 1
+            return
         with self._shared_arrived:
-            self._shared.setdefault((sequence, iteration), {})[agent] = shared
+            round_key = (sequence, iteration)
+            if sequence <= self._finished_sequence:
+                self.rejected["round already over"] += 1
+                return
+            if (sequence > self._finished_sequence + MAX_SEQUENCES_AHEAD
+                    or iteration >= wire.MAX_ADMM_ITERATIONS
+                    or (round_key not in self._shared
+                        and len(self._shared) >= MAX_PENDING_ROUNDS)):
+                self.rejected["round too far ahead"] += 1
+                return
+            self._shared.setdefault(round_key, {})[agent] = shared
             self._shared_arrived.notify_all()
 
     def _exchange(self, sequence: int, update: int, iteration: int, shared: np.ndarray

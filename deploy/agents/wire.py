@@ -25,6 +25,11 @@ WIRE_VERSION = 1
 _FLOAT = np.dtype("<f8")
 
 
+# The most ADMM iterations a coordinator-free request may ask for (an update has 60 Hz to run
+# them; the paper runs 2): a larger count is refused, not run.
+MAX_ADMM_ITERATIONS = 100
+
+
 class WireError(ValueError):
     """A received message that is malformed, foreign or inconsistent (``reason`` is short)."""
 
@@ -127,9 +132,11 @@ def encode_peer_request(peer: PeerRequest, team: str, sequence: int, digest: str
     return message.SerializeToString()
 
 
-def encode_stop(team: str, agent: int) -> bytes:
+def encode_stop(team: str, agent: int, digest: str) -> bytes:
+    """Stop the agent; it carries the problem's digest, as a request does (a stop from
+    someone holding another problem is refused like its requests)."""
     return pb.SolveRequest(wire_version=WIRE_VERSION, team=team, agent=agent,
-                           stop=True).SerializeToString()
+                           problem_digest=digest, stop=True).SerializeToString()
 
 
 def decode_request(data: bytes, team: str, agent_count: int, digest: str,
@@ -139,10 +146,13 @@ def decode_request(data: bytes, team: str, agent_count: int, digest: str,
     message = _parse(pb.SolveRequest, data)
     _check_header(message, team, agent_count)
     assert isinstance(message, pb.SolveRequest)
-    if message.stop:
-        return message.sequence, None
     if message.problem_digest != digest:
         raise WireError(f"problem {message.problem_digest}, this agent holds {digest}")
+    if message.stop:
+        return message.sequence, None
+    if message.admm_iterations > MAX_ADMM_ITERATIONS:
+        raise WireError(f"admm_iterations {message.admm_iterations} above "
+                        f"{MAX_ADMM_ITERATIONS}")
     n, m = sizes.decision, sizes.constraints
     multipliers = ((_unpack(message.constraint_multipliers, m, "constraint multipliers"),
                     _unpack(message.bound_multipliers, n, "bound multipliers"))

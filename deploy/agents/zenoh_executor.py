@@ -34,6 +34,7 @@ from deploy.agents.zenoh_session import (
     any_port_of,
     concrete_endpoint,
     hello_key,
+    key_agent,
     open_session,
     reply_key,
     request_key,
@@ -133,6 +134,9 @@ class ZenohExecutor:
         except wire.WireError as error:
             self._reject(error)
             return
+        if key_agent(sample.key_expr) != hello.agent:  # type: ignore[attr-defined]
+            self._reject(wire.WireError("agent not its key's"))
+            return
         with self._condition:
             self.hellos[hello.agent] = hello
             self._condition.notify_all()
@@ -144,6 +148,10 @@ class ZenohExecutor:
                 self.spec.agent_count, self.sizes)
         except wire.WireError as error:
             self._reject(error)
+            return
+        # a reply is bound to the key it came on: agent i's reply on agent j's key is forged
+        if key_agent(sample.key_expr) != agent:  # type: ignore[attr-defined]
+            self._reject(wire.WireError("agent not its key's"))
             return
         with self._condition:
             if sequence != self._sequence:
@@ -214,7 +222,7 @@ class ZenohExecutor:
     def close(self) -> None:
         for agent, publisher in enumerate(getattr(self, "_publishers", [])):
             with contextlib.suppress(Exception):
-                publisher.put(wire.encode_stop(self.team, agent))
+                publisher.put(wire.encode_stop(self.team, agent, self.digest))
         for process in self._processes:
             try:
                 process.wait(timeout=2.0)

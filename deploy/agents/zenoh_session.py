@@ -88,6 +88,15 @@ def open_session(listen: list[str], connect: list[str]) -> zenoh.Session:
     return zenoh.open(config)
 
 
+def key_agent(key: object) -> int | None:
+    """The agent index a key names (``.../agent/<i>/...``), or None when it names none."""
+    parts = str(key).split("/")
+    for name, value in zip(parts, parts[1:], strict=False):
+        if name == "agent" and value.isdigit():
+            return int(value)
+    return None
+
+
 def request_key(prefix: str, agent: int) -> str:
     return f"{prefix}/agent/{agent}/request"
 

@@ -115,7 +115,7 @@ def round_trips(sizes: wire.ProblemSizes, count: int) -> dict[str, list[float]]:
             raise RuntimeError("the Zenoh peer did not answer in 5 s")
         times["zenoh"].append(time.perf_counter() - start)
     del times["zenoh"][:WARMUP]
-    publisher.put(wire.encode_stop(TEAM, 0))
+    publisher.put(wire.encode_stop(TEAM, 0, "bench"))
     peer.join(5)
     session.close()
     return times

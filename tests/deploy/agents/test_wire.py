@@ -49,7 +49,27 @@ def test_a_cold_request_has_no_multipliers_and_a_stop_has_no_request() -> None:
                                                 bound_multipliers=None, warm_start=False),
                                        TEAM, 1, DIGEST))
     assert cold is not None and cold.constraint_multipliers is None and not cold.warm_start
-    assert _decode(wire.encode_stop(TEAM, 0)) is None
+    assert _decode(wire.encode_stop(TEAM, 0, DIGEST)) is None
+
+
+def test_a_stop_for_another_problem_and_an_unbounded_iteration_count_are_refused() -> None:
+    with pytest.raises(wire.WireError, match="problem other"):
+        _decode(wire.encode_stop(TEAM, 0, "other"))  # a stop carries the digest too
+    rng = np.random.default_rng(3)
+    for iterations, allowed in ((wire.MAX_ADMM_ITERATIONS, True),
+                                (wire.MAX_ADMM_ITERATIONS + 1, False), (10**9, False)):
+        peer = wire.PeerRequest(_request(), iterations, rng.normal(size=4),
+                                rng.normal(size=(AGENTS, 4)))
+        data = wire.encode_peer_request(peer, TEAM, 5, DIGEST)
+        if allowed:
+            assert isinstance(_decode_any(data), wire.PeerRequest)
+        else:
+            with pytest.raises(wire.WireError, match="admm_iterations .* above 100"):
+                _decode_any(data)
+
+
+def _decode_any(data: bytes) -> object:
+    return wire.decode_request(data, TEAM, AGENTS, DIGEST, SIZES)[1]
 
 
 def test_a_reply_round_trips_and_a_failed_one_may_carry_nan() -> None:

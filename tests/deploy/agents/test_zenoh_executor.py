@@ -99,6 +99,43 @@ def test_messages_not_for_the_team_are_dropped_and_counted(run: SimRun,
         _inputs(run)).success
 
 
+def test_a_forged_and_a_replayed_reply_never_reach_a_plan(run: SimRun,
+                                                        executor: ZenohExecutor) -> None:
+    """A well-formed reply of agent 1 put on agent 0's key is forged (a reply is bound to its
+    key) and one with an old sequence is a replay: both are counted and left out, and the
+    update that follows plans from the agents' own replies."""
+    from core.admm.admm_executor import LocalSolveRequest
+    from core.nmpc.nlp_solver import NlpSolution, SolveStats
+
+    sizes = executor.sizes
+    bogus = NlpSolution(np.full(sizes.decision, 1e3), np.zeros(sizes.constraints),
+                        np.zeros(sizes.decision), SolveStats("Solve_Succeeded", True, 1, 0.001,
+                                                             0.0, 0.0))
+    request = LocalSolveRequest(1, np.zeros(sizes.decision), np.zeros(sizes.parameters),
+                                np.zeros(sizes.decision), np.zeros(sizes.decision))
+    forged_before = executor.rejected["agent not its key's"]
+    late_before = executor.late_replies
+    intruder = open_session([], executor.endpoints)
+    try:
+        time.sleep(0.5)  # let the sessions meet
+        intruder.put(reply_key(executor.key_prefix, 0),
+                     wire.encode_reply(bogus, "two_go2", 1, executor._sequence, request))
+        intruder.put(reply_key(executor.key_prefix, 1),
+                     wire.encode_reply(bogus, "two_go2", 1, max(executor._sequence - 1, 0),
+                                       request))
+        deadline = time.monotonic() + 5.0
+        while (executor.rejected["agent not its key's"] == forged_before
+               or executor.late_replies == late_before) and time.monotonic() < deadline:
+            time.sleep(0.05)
+    finally:
+        intruder.close()
+    assert executor.rejected["agent not its key's"] == forged_before + 1
+    assert executor.late_replies == late_before + 1
+    team = TeamModel.from_settings(run.scenario.team_settings(), srb_parameters)
+    plan = DistributedMpc(team, run.control.settings, executor=executor).update(_inputs(run))
+    assert plan.success and np.all(np.abs(plan.grf) < 1e3)
+
+
 def test_agents_that_never_come_are_reported(run: SimRun) -> None:
     spec = LocalSolverSpec(run.control.settings, 2, run.control.cache)
     network = AgentNetwork(spawn_agents=False, start_timeout_s=1.0, key_prefix="porter/nobody")
