@@ -84,9 +84,11 @@ def test_agents_started_by_hand_on_other_addresses_carry_the_payload_to_the_goal
 
 def test_channel_flags_reach_the_settings_and_bad_ones_are_refused(
         capsys: pytest.CaptureFixture[str]) -> None:
-    assert main(["sim", "--channel-drop", "1.5", "--no-record", "--quiet"]) == 2
+    with pytest.raises(SystemExit) as exit_info:  # refused while parsing, with its range
+        main(["sim", "--channel-drop", "1.5", "--no-record", "--quiet"])
+    assert exit_info.value.code == 2
     err = capsys.readouterr().err
-    assert "drop_probability" in err and "[0, 1)" in err
+    assert "argument --channel-drop" in err and "[0, 1)" in err
     scenario = load_scenario("two_go2")
     channel = scenario.controller.channel.model_copy(update={"max_delay_rounds": 3})
     spec = scenario.controller.model_copy(update={"channel": channel})
