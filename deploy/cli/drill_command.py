@@ -9,7 +9,7 @@ from pathlib import Path
 
 from deploy.cli.conventions import DIFFERS, OK, Output, error
 from deploy.drill.catalogue import catalogue
-from deploy.drill.runner import format_table, run_fault
+from deploy.drill.runner import CONTROL, format_table, judge, run_case, with_control
 
 __all__ = ["run_drill"]
 
@@ -24,11 +24,15 @@ def run_drill(args: argparse.Namespace) -> int:
                      f"{[fault.name for fault in catalogue()]}")
     out = Output(args)
     folder = Path(args.keep) if args.keep else Path(tempfile.mkdtemp(prefix="porter-drill-"))
-    out.progress(f"porter drill: {len(faults)} faults, one porter deploy --backend sim each "
-                 f"(runs in {folder})")
+    out.progress(f"porter drill: {len(faults)} faults, one porter deploy --backend sim each, "
+                 f"and a control run without a fault (runs in {folder})")
+    # every case's check must fail on the control run: a check that passes without its fault
+    # cannot tell it from its absence
+    control = run_case(CONTROL, folder / "control")
     rows = []
     for index, fault in enumerate(faults):
-        rows.append(run_fault(fault, folder / f"{index:02d}"))
+        rows.append(with_control(judge(fault, run_case(fault, folder / f"{index:02d}")),
+                                 fault, control))
         row = rows[-1]
         out.progress(f"  {fault.name}: {'ok' if row.passed else 'NOT AS EXPECTED'} "
                      f"(exit {row.exit_code}; {row.detail[:70]})")

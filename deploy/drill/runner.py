@@ -30,7 +30,8 @@ from deploy.drill.catalogue import AT_S, DAMPED_WITHIN_S, DrillFault
 from deploy.recording.log_reader import LogError, LogFile, recover
 from deploy.reports.table import Column, render_table
 
-__all__ = ["DURATION_S", "DrillRow", "format_table", "run_fault"]
+__all__ = ["CONTROL", "DURATION_S", "DrillRow", "RunOutput", "format_table", "judge",
+           "run_case", "run_fault", "with_control"]
 
 DURATION_S = 2.0  # RUNNING seconds
 ORPHAN_REPORT = "world_after_porter.json"  # kill -9: the world's ground truth after porter
@@ -53,6 +54,26 @@ class DrillRow:
     log: str
     exit_code: int
     detail: str
+    within_ms: float | None = None  # the case's bound on its detection time
+    control_fails: bool | None = None  # the same check on the control run failed (as it must)
+
+
+@dataclass
+class RunOutput:
+    """What one ``porter deploy`` of a case left: its exit code, summary, stderr, flight log
+    and (kill -9 of porter) the world's report after porter was gone."""
+
+    code: int
+    summary: dict[str, Any] | None
+    stderr: str
+    log_path: Path
+    folder: Path
+    orphan_report: dict[str, Any] | None = None
+
+
+# The control run: the drill's deploy with no fault. Every case's check is also applied to it
+# and must fail there, or the check could not tell the fault from its absence.
+CONTROL = DrillFault("control run (no fault)", "ignored", "")
 
 
 def _merge(base: dict[str, Any], changes: dict[str, Any]) -> dict[str, Any]:
@@ -114,7 +135,32 @@ def _act(process: subprocess.Popen, fault: DrillFault, running: threading.Event,
 
 
 def run_fault(fault: DrillFault, folder: Path, timeout_s: float = 300.0) -> DrillRow:
-    """Run ``fault`` in ``folder`` (its config, log and output land there)."""
+    """Run ``fault`` in ``folder`` (its config, log and output land there) and judge it."""
+    return judge(fault, run_case(fault, folder, timeout_s))
+
+
+def judge(fault: DrillFault, output: RunOutput) -> DrillRow:
+    """``fault``'s verdict on a run's ``output`` (its own, or the control run's)."""
+    if fault.action == "kill_porter":
+        return _judge_kill(fault, output.code, output.orphan_report, output.log_path,
+                           output.folder)
+    return _judge(fault, output.code, output.summary, output.stderr, output.log_path,
+                  output.folder)
+
+
+def with_control(row: DrillRow, fault: DrillFault, control: RunOutput) -> DrillRow:
+    """``row`` with the control verdict: the case's check applied to the control run must
+    fail; a check that passes there as well cannot fail, and the row does not pass."""
+    fails = not judge(fault, control).passed
+    row.control_fails = fails
+    if not fails:
+        row.passed = False
+        row.detail = ("its check passes without the fault too; " + row.detail)[:110]
+    return row
+
+
+def run_case(fault: DrillFault, folder: Path, timeout_s: float = 300.0) -> RunOutput:
+    """One ``porter deploy --backend sim`` of ``fault`` in ``folder``, its action done."""
     folder.mkdir(parents=True, exist_ok=True)
     config = _config(fault, folder)
     log_path = folder / "run.mcap"
@@ -155,11 +201,10 @@ def run_fault(fault: DrillFault, folder: Path, timeout_s: float = 300.0) -> Dril
     running.set()  # release an actor still waiting
     stdout = "".join(output)
     (folder / "stderr.txt").write_text("".join(errors))
-    if fault.action == "kill_porter":
-        return _judge_kill(fault, process.returncode, _orphan_report(folder / ORPHAN_REPORT),
-                           log_path, folder)
-    summary = _summary(stdout)
-    return _judge(fault, process.returncode, summary, "".join(errors), log_path, folder)
+    orphan = (_orphan_report(folder / ORPHAN_REPORT) if fault.action == "kill_porter"
+              else None)
+    return RunOutput(process.returncode, _summary(stdout), "".join(errors), log_path, folder,
+                     orphan)
 
 
 def _orphan_report(path: Path, timeout_s: float = 60.0) -> dict[str, Any] | None:
@@ -194,7 +239,7 @@ def _judge_kill(fault: DrillFault, code: int, truth: dict[str, Any] | None, log_
     detail = (f"every robot damped by the watchdog within {detected_ms:.0f} ms of the loss"
               if damped else "a robot got no damping command")
     return DrillRow(fault.name, fault.expect, passed, detected_ms, "killed", non_damping, log,
-                    code, detail)
+                    code, detail, 1e3 * DAMPED_WITHIN_S)
 
 
 def _summary(stdout: str) -> dict[str, Any] | None:
@@ -246,22 +291,25 @@ def _judge(fault: DrillFault, code: int, summary: dict[str, Any] | None, stderr:
                    if truth.get("faults_applied") else None)
     final, cause = summary.get("final_state", "?"), summary.get("safe_stop") or ""
     if fault.expect == "safe stop":
+        in_time = fault.within_ms is None or (detected_ms is not None
+                                              and detected_ms <= fault.within_ms)
         passed = (code == 3 and final == "DONE" and fault.cause in cause
-                  and (non_damping in (0, None)))
-        detail = cause
+                  and (non_damping in (0, None)) and in_time)
+        detail = cause if in_time else f"detected after {detected_ms} ms; {cause}"
     elif fault.expect == "sit down":
         passed = code == 130 and final == "DONE" and not cause
         detail = summary.get("result", "")
     elif fault.expect == "rides through":
         count = _dotted(summary, fault.evidence)
-        passed = code == 0 and final == "DONE" and not cause and (count or 0) > 0
+        passed = (code == 0 and final == "DONE" and not cause
+                  and (count or 0) > fault.evidence_above)
         detail = f"{fault.evidence} {count}; {summary.get('result', '')}"
     else:  # ignored
         rejected = sum(summary.get("rejected", {}).get(fault.rejected, {}).values())
         passed = code == 0 and final == "DONE" and not cause and rejected > 0
         detail = f"{rejected} {fault.rejected} packets refused; {summary.get('result', '')}"
     return DrillRow(fault.name, fault.expect, passed, detected_ms, final, non_damping, log,
-                    code, detail[:110])
+                    code, detail[:110], fault.within_ms)
 
 
 def _dotted(summary: dict[str, Any], key: str) -> Any:
@@ -273,10 +321,13 @@ def _dotted(summary: dict[str, Any], key: str) -> Any:
 
 def format_table(rows: list[DrillRow]) -> str:
     columns: list[Column | str] = [
-        "fault", "expected", "ok", Column("detected [ms]", "right"), "final",
+        "fault", "expected", "ok", Column("detected [ms]", "right"),
+        Column("bound [ms]", "right"), "control", "final",
         Column("non-damping", "right"), "log", Column("exit", "right"), "detail"]
     cells = [[row.fault, row.expect, "yes" if row.passed else "NO",
               "-" if row.detected_after_ms is None else f"{row.detected_after_ms:.0f}",
+              "-" if row.within_ms is None else f"{row.within_ms:.0f}",
+              {None: "-", True: "fails", False: "PASSES"}[row.control_fails],
               row.final_state,
               "-" if row.non_damping_after_detection is None
               else str(row.non_damping_after_detection),
@@ -284,5 +335,6 @@ def format_table(rows: list[DrillRow]) -> str:
     passed = sum(row.passed for row in rows)
     return render_table(columns, cells, [
         f"{passed} of {len(rows)} faults handled as expected; detected: simulated ms from the "
-        "fault to the first damping-only command a robot received; non-damping: commands that "
-        "were not damping after that (must be 0)"])
+        "fault to the first damping-only command a robot received (bound: the most the case "
+        "allows); control: the case's check on a run without any fault (it must fail); "
+        "non-damping: commands that were not damping after that (must be 0)"])

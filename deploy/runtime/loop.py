@@ -104,6 +104,8 @@ class ControlLoop:
             "safe_stop": supervisor.fault or None,
             "transitions": [f"{t.time_s:.3f} s {t.text}" for t in supervisor.transitions],
             "nmpc_updates": nmpc.updates, "nmpc_deadline_misses": nmpc.deadline_misses,
+            # the longest a decision waited for its plan [ms of the loop's clock]
+            "nmpc_longest_delay_ms": round(1e3 * max(nmpc.delays_s, default=0.0), 3),
             "nmpc_failed_updates": nmpc.solver_failures,
             "nmpc_margin_flags": nmpc.margin_flags, "nmpc_relaxed_plans": nmpc.relaxed_plans,
             "braking_since_s": self.control.braking_since_s,

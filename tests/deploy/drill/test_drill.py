@@ -9,7 +9,17 @@ import pytest
 
 from deploy.config.deploy_config import SimFault
 from deploy.drill.catalogue import DrillFault, catalogue
-from deploy.drill.runner import _judge, _judge_kill, _merge, format_table, run_fault
+from deploy.drill.runner import (
+    CONTROL,
+    _judge,
+    _judge_kill,
+    _merge,
+    format_table,
+    judge,
+    run_case,
+    run_fault,
+    with_control,
+)
 from deploy.recording.flight_recorder import FlightRecorder
 from deploy.recording.log_format import LOG_FORMAT_VERSION, RUN_METADATA
 
@@ -120,6 +130,32 @@ def test_a_refused_config_must_exit_2_and_name_the_field(tmp_path: Path) -> None
     assert not _judge(fault, 1, None, err, tmp_path / "x.mcap", tmp_path).passed
     assert not _judge(fault, 2, None, "porter: other error\n", tmp_path / "x.mcap",
                       tmp_path).passed
+
+
+def test_a_detection_slower_than_its_bound_fails_the_case(tmp_path: Path) -> None:
+    log = tmp_path / "absent.mcap"
+    summary = _summary("e-stop: pressed", 0, first_damping_s=0.1)  # detected after 100 ms
+    assert _judge(DrillFault("e-stop", "safe stop", "e-stop", within_ms=150), 3, summary, "",
+                  log, tmp_path).passed
+    late = _judge(DrillFault("e-stop", "safe stop", "e-stop", within_ms=50), 3, summary, "",
+                  log, tmp_path)
+    assert not late.passed and "detected after 100" in late.detail
+    safe_stops = [f for f in catalogue() if f.expect == "safe stop" and f.action == "none"]
+    assert all(f.within_ms is not None for f in safe_stops)  # every timed case has a bound
+
+
+@pytest.mark.slow
+def test_every_check_fails_on_the_control_run(tmp_path: Path) -> None:
+    """The drill's own control: a run without any fault, judged by every case's check; each
+    must fail (a check that passes without its fault cannot fail), and with_control marks a
+    row that would pass there."""
+    control = run_case(CONTROL, tmp_path / "control")
+    assert control.code == 0 and control.summary is not None  # the plain run completes
+    passing = [f.name for f in catalogue() if judge(f, control).passed]
+    assert passing == []
+    always = DrillFault("a check that cannot fail", "ignored", "", rejected="go2_0")
+    row = with_control(judge(always, control), always, control)
+    assert row.control_fails is True  # (no packets were refused in the control run)
 
 
 @pytest.mark.slow
