@@ -37,10 +37,12 @@ class SimFault(StrictModel):
     ``robot``'s trunk for 0.4 s). Porter's own (``PORTER_FAULTS``): ``nmpc_failure`` (every NMPC
     plan from then on is a failed solve), ``recorder_failure`` (every log write fails with
     ENOSPC), ``loop_stall`` (the loop's thread hangs 0.3 s once), ``plan_late`` (the next NMPC
-    plan reaches the loop ``duration_s`` later than it was ready, once)."""
+    plan reaches the loop ``duration_s`` later than it was ready, once). ``external`` changes
+    nothing: it marks an action done from outside about then (the drill's), so that the world
+    counts what reaches the motors from it on."""
 
     at_s: float = Field(ge=0)
-    kind: Literal["estop_press", "heartbeat_loss", "mocap_loss", "mocap_frozen",
+    kind: Literal["external", "estop_press", "heartbeat_loss", "mocap_loss", "mocap_frozen",
                   "mocap_backwards", "mocap_foreign", "natnet_malformed",
                   "robot_silent", "robot_stall", "robot_frozen", "robot_garbage", "robot_nan",
                   "robot_bad_crc", "robot_push", "nmpc_failure", "recorder_failure", "loop_stall",

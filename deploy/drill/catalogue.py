@@ -113,7 +113,10 @@ def catalogue() -> list[DrillFault]:
         DrillFault("NMPC plan 50 ms late", "rides through", "",
                    _sim("plan_late", duration_s=0.05), evidence="nmpc_longest_delay_ms",
                    evidence_above=50.0),
-        DrillFault("NMPC process killed", stop, "NMPC process lost", action="kill_nmpc"),
+        # (the marker starts the world's count shortly before the kill: from the first
+        # damping-only command on, nothing else may reach a motor)
+        DrillFault("NMPC process killed", stop, "NMPC process lost",
+                   _sim("external", at_s=AT_S - 0.3), action="kill_nmpc"),
         DrillFault("kill -9 of porter (the loop's own process)", "damped", "",
                    action="kill_porter"),
         DrillFault("flight recorder: disk full", stop, "flight recorder failed",

@@ -293,8 +293,9 @@ def _judge(fault: DrillFault, code: int, summary: dict[str, Any] | None, stderr:
     if fault.expect == "safe stop":
         in_time = fault.within_ms is None or (detected_ms is not None
                                               and detected_ms <= fault.within_ms)
+        # (every safe-stop case has the world counting: a fault applied, or a marker)
         passed = (code == 3 and final == "DONE" and fault.cause in cause
-                  and (non_damping in (0, None)) and in_time)
+                  and non_damping == 0 and in_time)
         detail = cause if in_time else f"detected after {detected_ms} ms; {cause}"
     elif fault.expect == "sit down":
         passed = code == 130 and final == "DONE" and not cause

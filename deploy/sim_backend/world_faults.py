@@ -53,6 +53,8 @@ def inject_due_faults(world: SimWorld, elapsed_s: float) -> None:
             fake = world.fakes[fault.robot]
             if isinstance(fake, FakeGo2):  # load_deploy_config allows no other
                 fake.corrupt = fault.kind.removeprefix("robot_")
+        elif fault.kind == "external":
+            pass  # done from outside (the drill); from now on the world counts the commands
         elif fault.kind in PORTER_FAULTS:
             pass  # porter injects it itself (deploy.sim_backend.porter_faults); counted
         world.faults_applied.append({"kind": fault.kind, "robot": fault.robot,
