@@ -11,8 +11,9 @@ def test_every_pace_measures_real_ticks_of_both_robots() -> None:
     for row in rows:
         assert row["ticks"] == 40 and row["robots"] == 2
         # two QPs, two Pinocchio passes and the gait cost something, and far less than a tick
-        # of the slowest pace
-        assert 0.01 < row["median_ms"] <= row["p99_ms"] < 20.0
+        # of the slowest pace; the p99 of 40 ticks is their slowest, which a busy machine may
+        # deschedule (a wall-clock bound there would test the machine)
+        assert 0.01 < row["median_ms"] < 20.0 and row["median_ms"] <= row["p99_ms"]
     assert rows[0]["ratio"] == 1.0
     assert rows[1]["ratio"] == rows[1]["median_ms"] / rows[0]["median_ms"]
     table = format_table(rows)

@@ -3,6 +3,7 @@ one timing grid, one plan hand-off, the supervisor's flags, delay compensation."
 
 from __future__ import annotations
 
+import threading
 import time
 
 import pytest
@@ -115,12 +116,14 @@ def test_the_thread_runner_hands_plans_over_without_blocking_the_loop() -> None:
 
 
 def test_the_thread_reports_an_exception_as_a_result_not_a_crash() -> None:
-    control = FakeControl(raises=True)
+    gate = threading.Event()  # the solve is held until the second submit was tried
+    control = FakeControl(raises=True, gate=gate)
     thread = NmpcThread(control)  # type: ignore[arg-type]
     try:
         thread.submit(control.nmpc_inputs(0.0, [], frame(0.0)), 7)
         with pytest.raises(RuntimeError):
             thread.submit(control.nmpc_inputs(0.0, [], frame(0.0)), 8)  # one at a time
+        gate.set()
         deadline = time.monotonic() + 5.0
         result = None
         while result is None and time.monotonic() < deadline:

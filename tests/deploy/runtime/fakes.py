@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import threading
 from dataclasses import dataclass, field
 from types import SimpleNamespace
 
@@ -41,6 +42,7 @@ class FakeControl:
     decided: list[tuple[float, float]] = field(default_factory=list)  # (t, delay_s)
     raises: bool = False
     taken: list[tuple[float, object]] = field(default_factory=list)  # plan_taken calls
+    gate: threading.Event | None = None  # set: update may go on (a solve held on purpose)
 
     @property
     def controller(self) -> SimpleNamespace:
@@ -62,6 +64,8 @@ class FakeControl:
         return "braking: test" if getattr(plan, "relaxed", False) else None
 
     def update(self, decision: NmpcDecision) -> object:
+        if self.gate is not None:
+            self.gate.wait(10.0)
         if self.raises:
             raise RuntimeError("solver exploded")
         return self.plans.pop(0) if self.plans else plan()
