@@ -28,6 +28,7 @@ from core.admm.admm_executor import LocalSolverSpec, run_agent_admm, solve_reque
 from core.nmpc.layout import shared_indices
 from deploy.agents import wire
 from deploy.agents.zenoh_session import (
+    Credentials,
     concrete_endpoint,
     hello_key,
     key_agent,
@@ -55,6 +56,7 @@ class AgentAddress:
     key_prefix: str
     connect: list[str]
     listen: list[str]
+    credentials: Credentials | None = None  # the team's (None: no authentication, tests)
 
 
 class AdmmAgent:
@@ -88,7 +90,8 @@ class AdmmAgent:
 
     def serve(self) -> None:
         a = self.address
-        session = open_session([concrete_endpoint(e) for e in a.listen], a.connect)
+        session = open_session([concrete_endpoint(e) for e in a.listen], a.connect,
+                               a.credentials)
         try:
             session.declare_subscriber(request_key(a.key_prefix, a.agent),
                                        lambda sample: self._inbox.put(sample.payload.to_bytes()))

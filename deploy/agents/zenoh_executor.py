@@ -31,13 +31,16 @@ from core.nmpc.transport_problem import build_transport_problem
 from deploy.agents import wire
 from deploy.agents.zenoh_session import (
     AgentNetwork,
+    Credentials,
     any_port_of,
     concrete_endpoint,
     hello_key,
     key_agent,
+    load_credentials,
     open_session,
     reply_key,
     request_key,
+    write_credentials,
 )
 from deploy.nmpc_runtime.process_executor import failed_solution
 
@@ -66,7 +69,9 @@ class ZenohExecutor:
         self._processes: list[subprocess.Popen[bytes]] = []
         self._stderr: list[tempfile._TemporaryFileWrapper[bytes]] = []
         self._settings_file: Path | None = None
-        self._session = open_session(self.endpoints, [])
+        self._own_credentials: Path | None = None  # written for this run: removed at close
+        self.credentials = self._team_credentials(network)
+        self._session = open_session(self.endpoints, [], self.credentials)
         try:
             self._session.declare_subscriber(reply_key(self.key_prefix, "*"), self._on_reply)
             self._session.declare_subscriber(hello_key(self.key_prefix, "*"), self._on_hello)
@@ -79,6 +84,15 @@ class ZenohExecutor:
             self.close()
             raise
 
+    def _team_credentials(self, network: AgentNetwork) -> Credentials:
+        if network.credentials_file is not None:
+            return load_credentials(network.credentials_file)
+        # (AgentNetwork requires the file for agents started by hand)
+        folder = Path(tempfile.mkdtemp(prefix="porter-zenoh-"))
+        credentials = write_credentials(folder / "credentials")
+        self._own_credentials = credentials.file
+        return credentials
+
     # --- agents -------------------------------------------------------------------------------
     def agent_command(self, agent: int, settings_file: Path) -> list[str]:
         """The command line that starts ``agent`` against this coordinator."""
@@ -87,6 +101,7 @@ class ZenohExecutor:
                 "--team", self.team, "--key-prefix", self.key_prefix,
                 "--connect", self.endpoints[0], "--parent-pid", str(os.getpid()),
                 "--peer-timeout", f"{self.network.reply_timeout_s:g}",
+                "--credentials", str(self.credentials.file),
                 # an endpoint of its own on the coordinator's host: peers find one another
                 # through the coordinator's session (Zenoh gossip) and talk directly
                 "--listen", any_port_of(self.endpoints[0])]
@@ -237,4 +252,9 @@ class ZenohExecutor:
         if self._settings_file is not None:
             self._settings_file.unlink(missing_ok=True)
             self._settings_file = None
+        if self._own_credentials is not None:
+            self._own_credentials.unlink(missing_ok=True)
+            with contextlib.suppress(OSError):
+                self._own_credentials.parent.rmdir()
+            self._own_credentials = None
 

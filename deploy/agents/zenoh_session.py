@@ -1,19 +1,25 @@
-"""Zenoh sessions for ADMM agents: settings, key expressions, peer-mode sessions.
+"""Zenoh sessions for ADMM agents: settings, key expressions, credentials, peer-mode sessions.
 
 Peer mode with multicast scouting off: a session talks only to the endpoints it is given
 (loopback by default), so a run never reaches into the LAN unasked and two teams on one
-machine meet only if they share a key prefix (each run gets its own by default).
+machine meet only if they share a key prefix (each run gets its own by default). Every
+session authenticates with the team's user and password (Zenoh's usrpwd): a session without
+them, or with others, cannot open a link to the team, so nothing it says reaches an agent.
 """
 
 from __future__ import annotations
 
 import json
+import os
 import re
+import secrets
 import socket
+from dataclasses import dataclass
+from pathlib import Path
 from typing import Literal
 
 import zenoh
-from pydantic import Field, field_validator
+from pydantic import Field, field_validator, model_validator
 
 from core.model.strict_model import StrictModel
 
@@ -42,6 +48,11 @@ class AgentNetwork(StrictModel):
     spawn_agents: bool = True
     reply_timeout_s: float = Field(1.0, gt=0.0, le=60.0)
     start_timeout_s: float = Field(600.0, gt=0.0, le=3600.0)
+    # The team's Zenoh credentials (a ``user:password`` file, ``porter agent
+    # --new-credentials FILE`` writes one): every session of the team authenticates with
+    # them. None: porter writes a fresh one per run for the agents it spawns; agents started
+    # by hand (spawn_agents false) need the file, copied to their machines.
+    credentials_file: str | None = None
 
     @field_validator("listen")
     @classmethod
@@ -50,6 +61,14 @@ class AgentNetwork(StrictModel):
             if not _ENDPOINT.match(endpoint):
                 raise ValueError(f"{endpoint!r} is not a Zenoh endpoint like tcp/127.0.0.1:7447")
         return endpoints
+
+    @model_validator(mode="after")
+    def _hand_started_agents_need_credentials(self) -> AgentNetwork:
+        if not self.spawn_agents and self.credentials_file is None:
+            raise ValueError("credentials_file: agents started by hand (spawn_agents false) "
+                             "need the team's credentials; write them with porter agent "
+                             "--new-credentials FILE and give every agent the same file")
+        return self
 
     @field_validator("key_prefix")
     @classmethod
@@ -78,13 +97,51 @@ def any_port_of(endpoint: str) -> str:
     return f"{protocol}/{address.rpartition(':')[0]}:0"
 
 
-def open_session(listen: list[str], connect: list[str]) -> zenoh.Session:
-    """A peer-mode session listening on ``listen`` and connecting to ``connect``."""
+@dataclass(frozen=True)
+class Credentials:
+    """A team's Zenoh user and password, and the file that holds them (the dictionary every
+    session checks its peers against)."""
+
+    user: str
+    password: str
+    file: Path
+
+
+def write_credentials(path: Path | str) -> Credentials:
+    """A new random user and password in ``path`` (created, readable by its owner only)."""
+    path = Path(path)
+    user, password = f"porter-{secrets.token_hex(4)}", secrets.token_urlsafe(24)
+    handle = os.open(path, os.O_WRONLY | os.O_CREAT | os.O_EXCL, 0o600)
+    with os.fdopen(handle, "w") as file:
+        file.write(f"{user}:{password}\n")
+    return Credentials(user, password, path)
+
+
+def load_credentials(path: Path | str) -> Credentials:
+    """The credentials in ``path`` (its first ``user:password`` line); ValueError naming the
+    file when it holds none."""
+    path = Path(path)
+    for line in path.read_text().splitlines():
+        user, separator, password = line.strip().partition(":")
+        if separator and user and password:
+            return Credentials(user, password, path)
+    raise ValueError(f"{path}: no user:password line (write one with porter agent "
+                     "--new-credentials FILE)")
+
+
+def open_session(listen: list[str], connect: list[str],
+                 credentials: Credentials | None = None) -> zenoh.Session:
+    """A peer-mode session listening on ``listen`` and connecting to ``connect``,
+    authenticating with ``credentials`` (and accepting only peers that hold them)."""
     config = zenoh.Config()
     config.insert_json5("mode", json.dumps("peer"))
     config.insert_json5("listen/endpoints", json.dumps(listen))
     config.insert_json5("connect/endpoints", json.dumps(connect))
     config.insert_json5("scouting/multicast/enabled", "false")
+    if credentials is not None:
+        config.insert_json5("transport/auth/usrpwd", json.dumps({
+            "user": credentials.user, "password": credentials.password,
+            "dictionary_file": str(credentials.file)}))
     return zenoh.open(config)
 
 

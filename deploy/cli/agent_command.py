@@ -19,14 +19,21 @@ def add_agent_parser(commands: argparse._SubParsersAction) -> None:
     source.add_argument("--scenario", help="the scenario the coordinator runs (its settings)")
     source.add_argument("--settings", help="effective NMPC settings YAML (as porter writes "
                         "them for agents it starts); needs --agents")
+    source.add_argument("--new-credentials", metavar="FILE",
+                        help="write a new user:password file for a team (readable by its "
+                        "owner only) and exit; give the same file to the coordinator "
+                        "(controller.network.credentials_file) and every agent")
+    agent.add_argument("--credentials", metavar="FILE",
+                       help="the team's Zenoh credentials (user:password file): required")
     agent.add_argument("--config", help="YAML overriding MpcSettings fields (with --scenario)")
     agent.add_argument("--agents", type=whole_number_in(2, 64),
                        help="team size (with --settings)")
-    agent.add_argument("--index", type=whole_number_in(0, 63), required=True,
-                       help="this agent's robot, from 0")
+    agent.add_argument("--index", type=whole_number_in(0, 63),
+                       help="this agent's robot, from 0 (required)")
     agent.add_argument("--team", help="team name in every message (default: the scenario's)")
-    agent.add_argument("--key-prefix", required=True,
-                       help="the coordinator's key prefix, e.g. porter/two_go2/4711")
+    agent.add_argument("--key-prefix",
+                       help="the coordinator's key prefix, e.g. porter/two_go2/4711 "
+                       "(required)")
     agent.add_argument("--connect", nargs="+", default=[],
                        help="the coordinator's Zenoh endpoints, e.g. tcp/127.0.0.1:7447")
     agent.add_argument("--listen", nargs="+", default=[],
@@ -45,10 +52,31 @@ def run_agent(args: argparse.Namespace) -> int:
     from core.admm.admm_executor import LocalSolverSpec
     from core.nmpc.settings import MpcSettings
     from deploy.agents.agent import AdmmAgent, AgentAddress
+    from deploy.agents.zenoh_session import load_credentials, write_credentials
     from deploy.compute.codegen_cache import CompiledCodeCache
     from deploy.config.files import load_settings
     from deploy.config.scenario import load_scenario
 
+    if args.new_credentials:
+        try:
+            credentials = write_credentials(args.new_credentials)
+        except FileExistsError:
+            return error(f"agent --new-credentials {args.new_credentials}: the file exists; "
+                         "give a new path")
+        Output(args).progress(f"porter agent: wrote credentials for user {credentials.user} "
+                              f"to {credentials.file}")
+        return 0
+    missing = [option for option, value in (("--index", args.index),
+                                            ("--key-prefix", args.key_prefix),
+                                            ("--credentials", args.credentials))
+               if value is None]
+    if missing:
+        return error(f"agent: {', '.join(missing)} required (--credentials: the team's "
+                     "user:password file, as the coordinator's)")
+    try:
+        credentials = load_credentials(args.credentials)
+    except ValueError as failure:
+        return error(str(failure))
     if args.scenario:
         scenario = load_scenario(args.scenario)
         base = load_settings(args.config, MpcSettings) if args.config else MpcSettings()
@@ -64,7 +92,8 @@ def run_agent(args: argparse.Namespace) -> int:
         return error(f"agent --index must be in [0, {agent_count - 1}], got {args.index}")
     spec = LocalSolverSpec(settings, agent_count, CompiledCodeCache())
     agent = AdmmAgent(spec, AgentAddress(team, args.index, args.key_prefix, args.connect,
-                                         args.listen), parent_pid=args.parent_pid,
+                                         args.listen, credentials),
+                      parent_pid=args.parent_pid,
                       peer_timeout_s=args.peer_timeout)
     out = Output(args)
     out.progress(f"porter agent {args.index} of team {team!r}: problem {agent.digest}, "

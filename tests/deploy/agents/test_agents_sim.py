@@ -48,16 +48,20 @@ def test_serial_and_another_executor_contradict(capsys: pytest.CaptureFixture[st
 
 
 @pytest.mark.slow
-def test_agents_started_by_hand_on_other_addresses_carry_the_payload_to_the_goal() -> None:
+def test_agents_started_by_hand_on_other_addresses_carry_the_payload_to_the_goal(
+        tmp_path: Path) -> None:
     endpoint = concrete_endpoint("tcp/127.0.0.1:0")
     prefix = "porter/by_hand"
+    credentials = tmp_path / "team_credentials"
+    assert main(["agent", "--new-credentials", str(credentials)]) == 0
     agents = [subprocess.Popen(
         [sys.executable, "-m", "deploy.cli", "agent", "--scenario", "two_go2", "--index",
          str(i), "--key-prefix", prefix, "--connect", endpoint, "--listen",
-         f"tcp/127.0.0.{2 + i}:0"], cwd=ROOT, stdout=subprocess.DEVNULL,
-        stderr=subprocess.PIPE) for i in range(2)]
+         f"tcp/127.0.0.{2 + i}:0", "--credentials", str(credentials)], cwd=ROOT,
+        stdout=subprocess.DEVNULL, stderr=subprocess.PIPE) for i in range(2)]
     scenario = load_scenario("two_go2")
-    network = AgentNetwork(listen=[endpoint], key_prefix=prefix, spawn_agents=False)
+    network = AgentNetwork(listen=[endpoint], key_prefix=prefix, spawn_agents=False,
+                           credentials_file=str(credentials))
     scenario = scenario.model_copy(update={"controller": scenario.controller.model_copy(
         update={"executor": "zenoh", "network": network})})
     try:

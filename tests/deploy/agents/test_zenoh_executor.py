@@ -9,6 +9,7 @@ import signal
 import threading
 import time
 from collections.abc import Iterator
+from pathlib import Path
 
 import numpy as np
 import pytest
@@ -23,8 +24,10 @@ from deploy.agents.zenoh_session import (
     AgentNetwork,
     concrete_endpoint,
     hello_key,
+    load_credentials,
     open_session,
     reply_key,
+    write_credentials,
 )
 from deploy.compute.codegen_cache import CompiledCodeCache
 from deploy.config.scenario import load_scenario
@@ -81,7 +84,8 @@ def test_agents_over_zenoh_plan_what_this_process_plans(run: SimRun,
 def test_messages_not_for_the_team_are_dropped_and_counted(run: SimRun,
                                                            executor: ZenohExecutor) -> None:
     before = sum(executor.rejected.values())
-    intruder = open_session([], executor.endpoints)
+    # (a peer of the team, holding its credentials, that sends what is not the team's)
+    intruder = open_session([], executor.endpoints, executor.credentials)
     try:
         time.sleep(0.5)  # let the sessions meet
         intruder.put(reply_key(executor.key_prefix, 0), b"\x00garbage\xff")
@@ -115,7 +119,7 @@ def test_a_forged_and_a_replayed_reply_never_reach_a_plan(run: SimRun,
                                 np.zeros(sizes.decision), np.zeros(sizes.decision))
     forged_before = executor.rejected["agent not its key's"]
     late_before = executor.late_replies
-    intruder = open_session([], executor.endpoints)
+    intruder = open_session([], executor.endpoints, executor.credentials)
     try:
         time.sleep(0.5)  # let the sessions meet
         intruder.put(reply_key(executor.key_prefix, 0),
@@ -136,23 +140,62 @@ def test_a_forged_and_a_replayed_reply_never_reach_a_plan(run: SimRun,
     assert plan.success and np.all(np.abs(plan.grf) < 1e3)
 
 
-def test_agents_that_never_come_are_reported(run: SimRun) -> None:
+def test_a_session_without_the_teams_credentials_reaches_nothing(
+        run: SimRun, executor: ZenohExecutor, tmp_path: Path) -> None:
+    """Zenoh's user/password authentication: a session with no credentials or another team's
+    opens no link, so even its garbage is never heard (nothing counted), and a well-formed
+    hello it sends changes nothing."""
+    before, late = dict(executor.rejected), executor.late_replies
+    hellos = dict(executor.hellos)
+    stranger = write_credentials(tmp_path / "other_team")
+    for credentials in (None, stranger):
+        intruder = open_session([], executor.endpoints, credentials)
+        try:
+            time.sleep(0.7)  # as long as an authenticated peer needs to meet the team
+            for _ in range(5):
+                intruder.put(reply_key(executor.key_prefix, 0), b"\x00garbage\xff")
+                intruder.put(hello_key(executor.key_prefix, 1), wire.encode_hello(
+                    "two_go2", 1, executor.digest, "intruder", 1, 0))
+            time.sleep(0.5)
+        finally:
+            intruder.close()
+    assert dict(executor.rejected) == before and executor.late_replies == late
+    assert {a: h.host for a, h in executor.hellos.items()} == {a: h.host
+                                                               for a, h in hellos.items()}
+    team = TeamModel.from_settings(run.scenario.team_settings(), srb_parameters)
+    assert DistributedMpc(team, run.control.settings, executor=executor).update(
+        _inputs(run)).success
+
+
+def test_hand_started_agents_need_the_teams_credentials(tmp_path: Path) -> None:
+    with pytest.raises(ValueError, match="credentials_file: agents started by hand"):
+        AgentNetwork(spawn_agents=False)
+    credentials = write_credentials(tmp_path / "team")
+    assert load_credentials(credentials.file) == credentials
+    assert oct(credentials.file.stat().st_mode & 0o777) == "0o600"
+    with pytest.raises(FileExistsError):
+        write_credentials(credentials.file)  # never overwritten
+
+
+def test_agents_that_never_come_are_reported(run: SimRun, tmp_path: Path) -> None:
     spec = LocalSolverSpec(run.control.settings, 2, run.control.cache)
-    network = AgentNetwork(spawn_agents=False, start_timeout_s=1.0, key_prefix="porter/nobody")
+    network = AgentNetwork(spawn_agents=False, start_timeout_s=1.0, key_prefix="porter/nobody",
+                           credentials_file=str(write_credentials(tmp_path / "c").file))
     with pytest.raises(RuntimeError, match=r"agents \[0, 1\] did not announce themselves"):
         ZenohExecutor(spec, network, "two_go2")
 
 
-def test_an_agent_holding_another_problem_is_refused(run: SimRun) -> None:
+def test_an_agent_holding_another_problem_is_refused(run: SimRun, tmp_path: Path) -> None:
     spec = LocalSolverSpec(run.control.settings, 2, run.control.cache)
     endpoint = concrete_endpoint("tcp/127.0.0.1:0")
+    credentials = write_credentials(tmp_path / "c")
     network = AgentNetwork(listen=[endpoint], spawn_agents=False, start_timeout_s=10.0,
-                           key_prefix="porter/mixed")
+                           key_prefix="porter/mixed", credentials_file=str(credentials.file))
     stop = threading.Event()
 
     def stale_agents() -> None:  # hellos for another problem, as agents of an old config send
         time.sleep(0.5)  # the coordinator listens by then
-        peer = open_session([], [endpoint])
+        peer = open_session([], [endpoint], credentials)
         try:
             while not stop.is_set():
                 for agent in (0, 1):
