@@ -49,3 +49,15 @@ def test_a_profile_is_found_by_path_and_an_unknown_name_is_refused(tmp_path: Pat
     with pytest.raises(ConfigError, match="unknown profile 'nowhere'; shipped profiles: "
                                           "paper, porter"):
         load_profile("nowhere")
+
+
+def test_porter_sim_takes_a_profile_by_name_and_refuses_an_unknown_one(
+        capsys: pytest.CaptureFixture[str]) -> None:
+    import argparse
+
+    from deploy.cli.porter import main, mpc_settings
+
+    assert mpc_settings(argparse.Namespace(config="paper")) == load_profile("paper")[1]
+    assert mpc_settings(argparse.Namespace(config=None)) == MpcSettings()
+    assert main(["sim", "--config", "nowhere", "--no-record", "--duration", "0.1"]) == 2
+    assert "unknown profile 'nowhere'" in capsys.readouterr().err
