@@ -40,8 +40,11 @@ OK, DIFFERS, USAGE, SAFE_STOP, STOPPED = 0, 1, 2, 3, 130
 
 def number_in(low: float, high: float, low_open: bool = False, high_open: bool = False
               ) -> Callable[[str], float]:
-    """An argument type: a finite number within [low, high] (an open end excludes it)."""
+    """An argument type: a finite number within [low, high] (an open end excludes it; high
+    ``math.inf``: no upper bound)."""
     left, right = "(" if low_open else "[", ")" if high_open else "]"
+    where = (f"{'above' if low_open else 'at least'} {low:g}" if math.isinf(high)
+             else f"in {left}{low:g}, {high:g}{right}")
 
     def parse(text: str) -> float:
         try:
@@ -52,23 +55,23 @@ def number_in(low: float, high: float, low_open: bool = False, high_open: bool =
                   and (value < high if high_open else value <= high))
         if not inside:
             raise argparse.ArgumentTypeError(
-                f"must be a finite number in {left}{low:g}, {high:g}{right}, got {text}")
+                f"must be a finite number {where}, got {text}")
         return value
 
     return parse
 
 
-def whole_number_in(low: int, high: int) -> Callable[[str], int]:
-    """An argument type: a whole number within [low, high]."""
+def whole_number_in(low: int, high: int | None = None) -> Callable[[str], int]:
+    """An argument type: a whole number within [low, high] (high None: no upper bound)."""
+    where = f"at least {low}" if high is None else f"in [{low}, {high}]"
 
     def parse(text: str) -> int:
         try:
             value = int(text)
         except ValueError:
             raise argparse.ArgumentTypeError(f"{text!r} is not a whole number") from None
-        if not low <= value <= high:
-            raise argparse.ArgumentTypeError(f"must be a whole number in [{low}, {high}], "
-                                             f"got {text}")
+        if value < low or (high is not None and value > high):
+            raise argparse.ArgumentTypeError(f"must be a whole number {where}, got {text}")
         return value
 
     return parse

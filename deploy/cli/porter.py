@@ -18,7 +18,9 @@ from deploy.cli.conventions import (
     add_record_options,
     error,
     existing_record,
+    number_in,
     os_error,
+    whole_number_in,
 )
 from deploy.cli.log_arguments import add_log_parsers
 from deploy.cli.paper_command import add_paper_parser
@@ -28,15 +30,8 @@ if TYPE_CHECKING:
     from core.nmpc.settings import MpcSettings
 
 
-def positive_number(text: str) -> float:
-    """An argument that must be a positive, finite number (durations, time scales)."""
-    try:
-        value = float(text)
-    except ValueError:
-        raise argparse.ArgumentTypeError(f"{text!r} is not a number") from None
-    if not (math.isfinite(value) and value > 0.0):
-        raise argparse.ArgumentTypeError(f"must be a positive finite number, got {text}")
-    return value
+# durations and time scales: positive and finite
+positive_number = number_in(0.0, math.inf, low_open=True)
 
 
 def loop_priority(text: str) -> int | None:
@@ -48,15 +43,8 @@ def loop_priority(text: str) -> int | None:
     return int(text)
 
 
-def count(text: str) -> int:
-    """An argument that must be a whole number >= 1 (runs, samples, agents)."""
-    try:
-        value = int(text)
-    except ValueError:
-        raise argparse.ArgumentTypeError(f"{text!r} is not a whole number") from None
-    if value < 1:
-        raise argparse.ArgumentTypeError(f"must be at least 1, got {text}")
-    return value
+# runs, samples, agents
+count = whole_number_in(1)
 
 
 def mpc_settings(args: argparse.Namespace) -> MpcSettings:
