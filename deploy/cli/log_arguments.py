@@ -61,7 +61,7 @@ def add_log_parsers(commands: argparse._SubParsersAction, regress_handler: Handl
     timeline.add_argument("log", help="LOG.mcap")
     timeline.add_argument("--around-fault", action="store_true", required=True,
                           help="the window before each safe stop (the only view so far)")
-    timeline.add_argument("--window-ms", type=number_in(0.0, 60_000.0, low_open=True),
+    timeline.add_argument("--window-ms", type=number_in(0.0, 10_000.0, low_open=True),
                           default=50.0,
                           help="how far before each stop to look [ms] (default 50)")
     add_output_options(timeline, "the timelines")

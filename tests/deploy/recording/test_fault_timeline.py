@@ -118,8 +118,11 @@ def test_porter_log_timeline_rejects_bad_input(tmp_path: Path,
     missing = tmp_path / "missing.mcap"
     assert main(["log", "timeline", str(missing), "--around-fault"]) == 2
     assert "missing.mcap" in capsys.readouterr().err
-    assert main(["log", "timeline", str(missing), "--around-fault", "--window-ms", "nan"]) == 2
-    assert "--window-ms must be in (0, 10000]" in capsys.readouterr().err
+    for bad in ("nan", "0", "10001"):
+        with pytest.raises(SystemExit) as usage:
+            main(["log", "timeline", str(missing), "--around-fault", "--window-ms", bad])
+        assert usage.value.code == 2
+        assert "--window-ms: must be a finite number in (0, 10000]" in capsys.readouterr().err
 
 
 def test_a_log_without_a_safe_stop_says_so() -> None:
