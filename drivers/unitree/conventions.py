@@ -23,7 +23,6 @@ from dataclasses import dataclass, field
 import numpy as np
 
 from core.model.conventions import FOOT_COUNT, JOINT_COUNT, LEG_JOINT_KINDS, LEG_JOINT_NAMES, LEG_NAMES
-from core.model.rotations import rotation_from_quaternion_wxyz
 from drivers.interfaces import JointCommand, RobotMeasurement
 
 MOTOR_SLOT_COUNT = 20
@@ -44,6 +43,9 @@ MAX_JOINT_TORQUE_NM = 500.0
 MAX_BODY_RATE_RAD_S = 100.0
 QUATERNION_NORM_TOLERANCE = 0.05
 STANDARD_GRAVITY_M_S2 = 9.80665
+
+
+_INT16_MIN, _INT16_MAX = int(np.iinfo(np.int16).min), int(np.iinfo(np.int16).max)
 
 
 def _slots(values: np.ndarray | None = None) -> np.ndarray:
@@ -91,18 +93,24 @@ def wire_state_from_measurement(measurement: RobotMeasurement, foot_force_n_per_
                                 tick_ms: int = 0) -> WireState:
     """What a Unitree robot in ``measurement``'s state would send (fakes). The accelerometer
     reads the static specific force R^T (0, 0, g) (the measurement carries no acceleration)."""
-    quaternion = np.asarray(measurement.quaternion_wxyz, dtype=float)
-    world_to_body = rotation_from_quaternion_wxyz(quaternion).T
+    # scalar math, not NumPy: the world process runs this per robot at 500 Hz
+    w, x, y, z = (float(v) for v in measurement.quaternion_wxyz)
+    norm = math.sqrt(w * w + x * x + y * y + z * z)
+    # R^T (0, 0, g) is g times R's last row, (2(xz - wy), 2(yz + wx), 1 - 2(x^2 + y^2)) / |q|^2
+    g = STANDARD_GRAVITY_M_S2 / (norm * norm)
+    accelerometer = np.array([2.0 * (x * z - w * y) * g, 2.0 * (y * z + w * x) * g,
+                              (w * w - x * x - y * y + z * z) * g])
     counts = np.zeros(FOOT_COUNT, dtype=np.int16)
     counts[WIRE_FOOT_OF_FOOT] = np.clip(
         np.rint(measurement.foot_normal_force_n / foot_force_n_per_count),
-        np.iinfo(np.int16).min, np.iinfo(np.int16).max)
+        _INT16_MIN, _INT16_MAX)
     return WireState(
         q_rad=_slots(measurement.position_rad), dq_rad_s=_slots(measurement.velocity_rad_s),
-        tau_est_nm=_slots(measurement.torque_nm), quaternion_wxyz=quaternion.copy(),
+        tau_est_nm=_slots(measurement.torque_nm),
+        quaternion_wxyz=np.array([w, x, y, z]),
         gyroscope_rad_s=np.array(measurement.angular_velocity_in_body_rad_s, dtype=float),
-        accelerometer_m_s2=world_to_body @ np.array([0.0, 0.0, STANDARD_GRAVITY_M_S2]),
-        rpy_rad=rpy_from_quaternion_wxyz(quaternion),
+        accelerometer_m_s2=accelerometer, rpy_rad=np.array(_rpy(w / norm, x / norm, y / norm,
+                                                                 z / norm)),
         foot_force=counts, tick_ms=tick_ms)
 
 
@@ -192,10 +200,16 @@ def command_problem(wire: WireCommand) -> str | None:
 # --- IMU ------------------------------------------------------------------------------------
 def rpy_from_quaternion_wxyz(quaternion_wxyz: np.ndarray) -> np.ndarray:
     """Roll, pitch, yaw [rad] (Z-Y-X intrinsic, as the Unitree IMU reports) of (w, x, y, z)."""
-    w, x, y, z = np.asarray(quaternion_wxyz, dtype=float) / np.linalg.norm(quaternion_wxyz)
-    return np.array([np.arctan2(2 * (w * x + y * z), 1 - 2 * (x * x + y * y)),
-                     np.arcsin(np.clip(2 * (w * y - z * x), -1.0, 1.0)),
-                     np.arctan2(2 * (w * z + x * y), 1 - 2 * (y * y + z * z))])
+    w, x, y, z = (float(v) for v in quaternion_wxyz)
+    norm = math.sqrt(w * w + x * x + y * y + z * z)
+    return np.array(_rpy(w / norm, x / norm, y / norm, z / norm))
+
+
+def _rpy(w: float, x: float, y: float, z: float) -> tuple[float, float, float]:
+    """Roll, pitch, yaw [rad] of the unit quaternion (w, x, y, z)."""
+    return (math.atan2(2 * (w * x + y * z), 1 - 2 * (x * x + y * y)),
+            math.asin(min(1.0, max(-1.0, 2 * (w * y - z * x)))),
+            math.atan2(2 * (w * z + x * y), 1 - 2 * (y * y + z * z)))
 
 
 # --- CRC ------------------------------------------------------------------------------------

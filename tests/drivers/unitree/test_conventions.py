@@ -7,7 +7,7 @@ import numpy as np
 import pytest
 
 from core.model.conventions import LEG_JOINT_NAMES, LEG_NAMES
-from core.model.rotations import rotation_from_quaternion_wxyz
+from core.model.rotations import euler_from_rotation, rotation_from_quaternion_wxyz
 from drivers.interfaces import JointCommand, RobotMeasurement
 from drivers.unitree.conventions import (
     POS_STOP_F,
@@ -91,6 +91,27 @@ def test_wire_state_round_trip_and_conventions():
     # measured by neither robot: zero until the estimator pipeline fills them in
     np.testing.assert_array_equal(back.position_in_world_m, np.zeros(3))
     np.testing.assert_array_equal(back.linear_velocity_in_world_m_s, np.zeros(3))
+
+
+def test_imu_fields_match_the_rotation_matrix_for_any_quaternion_norm():
+    """The scalar IMU formulas against the rotation matrix, on quaternions a little off unit
+    length (as a simulator's are): R^T (0, 0, g) and the Z-Y-X angles of R."""
+    rng = np.random.default_rng(3)
+    for _ in range(200):
+        quaternion = rng.normal(size=4)
+        quaternion *= (1.0 + 1e-3 * rng.normal()) / np.linalg.norm(quaternion)
+        measurement = RobotMeasurement(
+            time_s=0.0, position_rad=np.zeros(12), velocity_rad_s=np.zeros(12),
+            torque_nm=np.zeros(12), position_in_world_m=np.zeros(3), quaternion_wxyz=quaternion,
+            linear_velocity_in_world_m_s=np.zeros(3),
+            angular_velocity_in_body_rad_s=np.zeros(3), foot_contact=np.zeros(4, dtype=bool),
+            foot_normal_force_n=np.zeros(4))
+        wire = wire_state_from_measurement(measurement, foot_force_n_per_count=1.0)
+        rotation = rotation_from_quaternion_wxyz(quaternion)
+        np.testing.assert_allclose(wire.accelerometer_m_s2, rotation.T @ [0, 0, 9.80665],
+                                   atol=1e-12)
+        np.testing.assert_allclose(wire.rpy_rad, euler_from_rotation(rotation), atol=1e-9)
+        np.testing.assert_array_equal(wire.quaternion_wxyz, quaternion)
 
 
 def test_rpy_of_known_rotations():
